@@ -1,0 +1,88 @@
+:- module(oro,
+          [ % setup
+            oro_init/1,                 % +Options
+            oro_reset/0,
+            oro_robot_id/1,             % -Id
+            % changes
+            oro_add/2,                  % +Model, +Statements
+            oro_remove/2,               % +Model, +Statements
+            oro_clear/2,                % +Model, +Patterns
+            oro_update/2,               % +Model, +Statements
+            oro_save/2,                 % +Model, +File
+            % questions
+            oro_check/2,                % +Model, +Patterns
+            oro_find/4,                 % +Model, ?Var, +Patterns, -Values
+            oro_holds/4,                % +Model, ?S, ?P, ?O
+            oro_solve/2,                % +Model, +Patterns
+            oro_statements/3,           % +Statements, -Triples, -Bindings
+            % taxonomy
+            oro_type/3,                 % +Model, ?X, ?Class
+            oro_subclass/3,             % +Model, ?Sub, ?Super
+            oro_subproperty/3,          % +Model, ?Sub, ?Super
+            oro_class/2,                % +Model, ?Class
+            oro_individual/2,           % +Model, ?X
+            oro_superclasses/3,         % +Model, +Class, -Supers
+            oro_direct_superclasses/3,  % +Model, +Class, -Supers
+            oro_subclasses/3,           % +Model, +Class, -Subs
+            oro_direct_subclasses/3,    % +Model, +Class, -Subs
+            oro_instances/3,            % +Model, +Class, -Instances
+            oro_direct_instances/3,     % +Model, +Class, -Instances
+            oro_classes_of/3,           % +Model, +Individual, -Classes
+            oro_direct_classes_of/3,    % +Model, +Individual, -Classes
+            % labels and descriptions
+            oro_exists/2,               % +Model, +Resource
+            oro_label/3,                % +Model, +Resource, -Label
+            oro_label/4,                % +Model, +Resource, +Lang, -Label
+            oro_lookup/3,               % +Model, +Text, -Matches
+            oro_resource_kind/3,        % +Model, +Resource, -Kind
+            oro_infos/3,                % +Model, +Resource, -Triples
+            oro_resource_details/4,     % +Model, +Resource, +Lang, -Details
+            % names
+            oro_name_iri/2,             % +Text, -IRI
+            oro_iri_name/2,             % +IRI, -Text
+            oro_term_text/2             % +Term, -Text
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(oro/oro_names).
+:- use_module(oro/oro_knowledge).
+:- use_module(oro/oro_reason).
+:- use_module(oro/oro_query).
+:- use_module(oro/oro_taxonomy).
+:- use_module(oro/oro_lookup).
+
+/** <module> oro: a knowledge server for cognitive robots
+
+The public API of oro, usable in-process by planners and from the
+toplevel, without any server:
+
+    $ swipl -p library=prolog
+    ?- use_module(library(oro)).
+    ?- oro_init([]).
+    ?- oro_add(myself, ["fork1 rdf:type Fork", "fork1 isOn kitchen_table"]).
+    ?- oro_find(myself, o, ["?o isAt kitchen_table"], L).
+    L = [oro:fork1].
+    ?- oro_type(myself, oro:fork1, C).
+
+Every operation takes the model (agent) first: `myself` (alias
+`default`, or the robot id) is the robot.  Statements are text, as the
+ORO protocol writes them, or rdf(S,P,O) terms; names may be short
+(`fork1`), prefixed (`oro:'Fork'`) or full IRIs.  Loading this module
+makes the toplevel print IRIs of known namespaces as `Prefix:Local`.
+
+The module re-exports the documented predicates of `oro_knowledge`
+(changes, check and find), `oro_reason` (the inference closure),
+`oro_taxonomy`, `oro_lookup` and `oro_names`.
+*/
+
+:- multifile user:portray/1.
+
+%   Print IRIs of the namespaces oro knows as Prefix:Local, so answers
+%   read like what was typed.
+
+user:portray(IRI) :-
+    atom(IRI),
+    sub_atom(IRI, 0, _, _, http),
+    oro_prefix(Prefix, NS),
+    atom_concat(NS, Local, IRI),
+    Local \== '',
+    format('~q', [Prefix:Local]).

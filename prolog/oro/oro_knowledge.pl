@@ -1,0 +1,388 @@
+:- module(oro_knowledge,
+          [ oro_init/1,                 % +Options
+            oro_reset/0,
+            oro_add/2,                  % +Model, +Statements
+            oro_remove/2,               % +Model, +Statements
+            oro_clear/2,                % +Model, +Patterns
+            oro_update/2,               % +Model, +Statements
+            oro_check/2,                % +Model, +Patterns
+            oro_find/4,                 % +Model, ?Var, +Patterns, -Values
+            oro_statements/3,           % +Statements, -Triples, -Bindings
+            oro_save/2,                 % +Model, +File
+            oro_robot_id/1              % -Id
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(error)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(option)).
+:- use_module(library(settings)).
+:- use_module(oro_names).
+:- use_module(oro_parse).
+:- use_module(oro_store).
+:- use_module(oro_reason).
+:- use_module(oro_query).
+
+/** <module> Knowledge operations: add, remove, clear, update, check, find
+
+The operations of ORO's base methods, on a model (agent) given first:
+`myself` (or `default`, or the robot id) is the robot.  Statements and
+patterns are given either as text, exactly as over the protocol
+(`"fork1 isOn kitchen_table"`, `"?o isAt kitchen_table"`), or as terms
+rdf(S, P, O) whose names may be short (`fork1`), prefixed
+(`oro:'Fork'`, `rdf:type`) or full IRIs, whose objects may be Prolog
+numbers or strings (typed literals) or rdf_db literal terms, and whose
+variables are Prolog variables.
+
+    ?- oro_init([]),
+       oro_add(myself, ["fork1 rdf:type Fork", "fork1 isOn kitchen_table"]),
+       oro_find(myself, o, ["?o isAt kitchen_table"], L).
+    L = ['http://kb.openrobots.org#fork1'].
+
+Every change is one transaction: a batch is applied whole or not at
+all, and a malformed statement anywhere rejects the batch before
+anything changes.
+*/
+
+:- setting(robot_id, atom, '',
+           'Id of the robot: a synonym of myself (empty: none)').
+:- setting(save_dir, atom, '.',
+           'Directory under which save/1,2 may write').
+
+:- multifile user:file_search_path/2.
+:- dynamic user:file_search_path/2.
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/../../ontologies', Ontologies),
+   asserta(user:file_search_path(oro_ontologies, Ontologies)).
+
+:- predicate_options(oro_init/1, 1,
+                     [ commonsense(boolean),
+                       ontologies(list(atom)),
+                       robot_id(atom),
+                       save_dir(atom)
+                     ]).
+
+%!  oro_init(+Options) is det.
+%
+%   Start from an empty store: load the ontology layer and create the
+%   robot model.  Options:
+%
+%     - commonsense(+Bool): load oro's common-sense ontology
+%       (default `true`);
+%     - ontologies(+Files): more ontology files (RDF/XML, Turtle or
+%       N-Triples), loaded in order;
+%     - robot_id(+Id): a synonym of `myself`;
+%     - save_dir(+Dir): where oro_save/2 may write (default `.`).
+
+oro_init(Options) :-
+    must_be(list, Options),
+    option(commonsense(CommonSense), Options, true),
+    option(ontologies(Files), Options, []),
+    option(robot_id(RobotId), Options, ''),
+    option(save_dir(SaveDir), Options, '.'),
+    must_be(boolean, CommonSense),
+    must_be(list(atom), Files),
+    must_be(atom, RobotId),
+    must_be(atom, SaveDir),
+    set_setting(robot_id, RobotId),
+    set_setting(save_dir, SaveDir),
+    oro_store_reset,
+    (   CommonSense == true
+    ->  absolute_file_name(oro_ontologies('commonsense.ttl'), CS,
+                           [access(read)]),
+        oro_load_ontology(CS)
+    ;   true
+    ),
+    maplist(oro_load_ontology, Files),
+    create_robot_model.
+
+%!  oro_reset is det.
+%
+%   Forget every model, agent and fact asserted since oro_init/1; the
+%   ontology layer stays as loaded.
+
+oro_reset :-
+    oro_wipe_models,
+    create_robot_model.
+
+create_robot_model :-
+    oro_create_model(myself),
+    oro_add_model_alias(default, myself),
+    oro_robot_id(RobotId),
+    (   RobotId == ''
+    ->  Facts = ["myself rdf:type Robot"]
+    ;   oro_add_model_alias(RobotId, myself),
+        format(string(SameAs), "myself owl:sameAs ~w", [RobotId]),
+        Facts = ["myself rdf:type Robot", SameAs]
+    ),
+    oro_add(myself, Facts).
+
+%!  oro_robot_id(-Id) is det.
+%
+%   The robot id given to oro_init/1, or '' if none.
+
+oro_robot_id(Id) :-
+    setting(robot_id, Id).
+
+		 /*******************************
+		 *         STATEMENTS           *
+		 *******************************/
+
+%!  oro_statements(+Statements, -Triples, -Bindings) is det.
+%
+%   Normalise Statements (text or rdf/3 terms, see the module doc)
+%   into rdf(S,P,O) triples of IRIs, literals and variables.  Bindings
+%   maps the names of `?name` variables of text patterns to the
+%   variables of Triples, as Name=Var pairs; variables with the same
+%   name in several statements are shared.
+%
+%   @error syntax_error(oro_statement_tokens(N, Text)) and the other
+%          errors of oro_parse_statement/2.
+
+oro_statements(Statements, Triples, Bindings) :-
+    must_be(list, Statements),
+    foldl(statement_triple, Statements, Triples, [], Bindings0),
+    reverse(Bindings0, Bindings).
+
+statement_triple(Statement, rdf(S, P, O), B0, B) :-
+    (   text(Statement)
+    ->  oro_parse_statement(Statement, rdf(S0, P0, O0)),
+        foldl(bind_var, [S0-S, P0-P, O0-O], B0, B)
+    ;   Statement = rdf(S0, P0, O0)
+    ->  resource_term(S0, S),
+        resource_term(P0, P),
+        object_term(O0, O),
+        B = B0
+    ;   type_error(oro_statement, Statement)
+    ).
+
+text(X) :-
+    (   string(X)
+    ->  true
+    ;   atom(X)
+    ).
+
+bind_var(var(Name)-Var, B0, B) :-
+    !,
+    (   memberchk(Name=Var0, B0)
+    ->  Var = Var0,
+        B = B0
+    ;   B = [Name=Var|B0]
+    ).
+bind_var(Term-Term, B, B).
+
+resource_term(Var, Var) :-
+    var(Var),
+    !.
+resource_term(Prefix:Local, IRI) :-
+    !,
+    rdf_global_id(Prefix:Local, IRI).
+resource_term(Name, IRI) :-
+    atom(Name),
+    !,
+    oro_name_iri(Name, IRI).
+resource_term(Term, _) :-
+    type_error(oro_resource, Term).
+
+object_term(Var, Var) :-
+    var(Var),
+    !.
+object_term(literal(Value), literal(Value)) :-
+    !.
+object_term(N, literal(type(Type, Lex))) :-
+    number(N),
+    !,
+    (   integer(N)
+    ->  rdf_equal(xsd:int, Type)
+    ;   rdf_equal(xsd:double, Type)
+    ),
+    atom_number(Lex, N).
+object_term(S, literal(type(Type, Lex))) :-
+    string(S),
+    !,
+    rdf_equal(xsd:string, Type),
+    atom_string(Lex, S).
+object_term(Term, IRI) :-
+    resource_term(Term, IRI).
+
+complete_triples(Statements, Triples) :-
+    oro_statements(Statements, Triples, _),
+    (   member(rdf(S, P, O), Triples),
+        \+ ground(rdf(S, P, O))
+    ->  format(string(Text), "~w", [rdf(S, P, O)]),
+        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
+    ;   true
+    ).
+
+		 /*******************************
+		 *          CHANGES             *
+		 *******************************/
+
+%!  oro_add(+Model, +Statements) is det.
+%
+%   Assert Statements (long-term memory) in Model, in one transaction.
+%   Statements already known are ignored.  No consistency check.
+%
+%   @error existence_error(agent, Model) for an unknown model.
+%   @error syntax_error(_) if a statement is malformed or incomplete;
+%          nothing is then changed.
+
+oro_add(Model0, Statements) :-
+    oro_resolve_model(Model0, Model),
+    complete_triples(Statements, Triples),
+    oro_store_write(add(Model),
+                    oro_store_assert(Model, Triples, longterm)).
+
+%!  oro_remove(+Model, +Statements) is det.
+%
+%   Retract Statements from Model.  A statement with variables is a
+%   pattern, as in oro_clear/2.  Unknown statements are ignored.
+
+oro_remove(Model, Statements) :-
+    oro_clear(Model, Statements).
+
+%!  oro_clear(+Model, +Patterns) is det.
+%
+%   Retract, in one transaction, every *asserted* statement of Model
+%   matching one of Patterns.  Patterns are independent (their
+%   variables are not shared): `gorilla ?p ?o` forgets everything
+%   asserted about gorilla.  Inferred statements cannot be retracted;
+%   retract what supports them.
+
+oro_clear(Model0, Patterns) :-
+    oro_resolve_model(Model0, Model),
+    must_be(list, Patterns),
+    maplist(pattern_triple, Patterns, Triples),
+    oro_store_write(clear(Model), clear_triples(Model, Triples)).
+
+pattern_triple(Pattern, Triple) :-
+    oro_statements([Pattern], [Triple], _).
+
+clear_triples(Model, Patterns) :-
+    findall(rdf(S, P, O),
+            ( member(rdf(S, P, O), Patterns),
+              asserted_value(Model, S, P, O)
+            ),
+            Matches0),
+    sort(Matches0, Matches),
+    oro_store_retract(Model, Matches).
+
+asserted_value(Model, S, P, O) :-
+    (   nonvar(O),
+        O = literal(_)
+    ->  oro_asserted(Model, S, P, Literal),
+        Literal = literal(_),
+        oro_literal_match(O, Literal),
+        O = Literal
+    ;   oro_asserted(Model, S, P, O)
+    ).
+
+%!  oro_update(+Model, +Statements) is det.
+%
+%   Like oro_add/2, but for each statement whose predicate is a
+%   functional property of Model (declared in the ontology or at run
+%   time), first retract the asserted values it had for that subject.
+
+oro_update(Model0, Statements) :-
+    oro_resolve_model(Model0, Model),
+    complete_triples(Statements, Triples),
+    oro_store_write(update(Model), update_triples(Model, Triples)).
+
+update_triples(Model, Triples) :-
+    findall(rdf(S, P, Old),
+            ( member(rdf(S, P, _), Triples),
+              oro_functional_property(Model, P),
+              oro_asserted(Model, S, P, Old)
+            ),
+            Stale0),
+    sort(Stale0, Stale),
+    oro_store_retract(Model, Stale),
+    oro_store_assert(Model, Triples, longterm).
+
+		 /*******************************
+		 *          QUESTIONS           *
+		 *******************************/
+
+%!  oro_check(+Model, +Patterns) is semidet.
+%
+%   True if every pattern holds in the inference closure of Model.  A
+%   complete statement must be entailed; a partial one must have a
+%   solution.  Patterns do not share variables.
+
+oro_check(Model0, Patterns) :-
+    oro_resolve_model(Model0, Model),
+    must_be(list, Patterns),
+    maplist(pattern_triple, Patterns, Triples),
+    forall(member(Triple, Triples),
+           oro_pattern_holds(Model, Triple)).
+
+%!  oro_find(+Model, ?Var, +Patterns, -Values) is det.
+%
+%   Values is the ordered set of the values Var takes over the
+%   solutions of Patterns (a conjunction sharing variables) in the
+%   inference closure of Model; blank nodes are left out.  With text
+%   patterns, Var is a variable name (`o` or `?o`); with term patterns
+%   it is a Prolog variable (or a term of them) of Patterns.  A name
+%   that no pattern uses gives `[]`.
+%
+%   @error domain_error(oro_variable, '') for an empty variable name.
+
+oro_find(Model0, Var, Patterns, Values) :-
+    oro_resolve_model(Model0, Model),
+    must_be(list, Patterns),
+    oro_statements(Patterns, Triples, Bindings),
+    (   text(Var)
+    ->  variable_name(Var, Name),
+        (   memberchk(Name=Template, Bindings)
+        ->  oro_find_values(Model, Template, Triples, Values)
+        ;   Values = []
+        )
+    ;   oro_find_values(Model, Var, Triples, Values)
+    ).
+
+variable_name(Text, Name) :-
+    atom_string(Atom, Text),
+    (   sub_atom(Atom, 0, 1, _, ?)
+    ->  sub_atom(Atom, 1, _, 0, Name0)
+    ;   Name0 = Atom
+    ),
+    normalize_space(atom(Name), Name0),
+    (   Name == ''
+    ->  domain_error(oro_variable, Text)
+    ;   true
+    ).
+
+		 /*******************************
+		 *             SAVE             *
+		 *******************************/
+
+%!  oro_save(+Model, +File) is det.
+%
+%   Write what is asserted in Model (its ontology layer included, less
+%   what it removed) as RDF/XML to File, relative to the `save_dir`
+%   setting.  The file loads back with oro_init/1's ontologies option.
+%
+%   @error permission_error(write, oro_file, File) if File is absolute
+%          or goes up out of the save directory.
+
+oro_save(Model0, File) :-
+    oro_resolve_model(Model0, Model),
+    must_be(atom, File),
+    save_path(File, Path),
+    Graph = 'oro:save',
+    with_mutex(oro_write,
+               setup_call_cleanup(
+                   forall(oro_asserted(Model, S, P, O),
+                          rdf_assert(S, P, O, Graph)),
+                   rdf_save(Path, [graph(Graph)]),
+                   rdf_unload_graph(Graph))).
+
+save_path(File, Path) :-
+    setting(save_dir, Dir),
+    (   is_absolute_file_name(File)
+    ->  permission_error(write, oro_file, File)
+    ;   atomic_list_concat(Parts, /, File),
+        memberchk('..', Parts)
+    ->  permission_error(write, oro_file, File)
+    ;   directory_file_path(Dir, File, Path)
+    ).

@@ -1,0 +1,207 @@
+:- module(oro_names,
+          [ oro_default_namespace/1,    % -Namespace
+            oro_prefix/2,               % ?Prefix, ?Namespace
+            oro_name_iri/2,             % +Text, -IRI
+            oro_iri_name/2,             % +IRI, -Text
+            oro_local_name/2,           % +IRI, -Local
+            oro_literal_lexical/2,      % +Literal, -Lexical
+            oro_term_text/2,            % +Term, -Text
+            oro_term_local_text/2,      % +Term, -Text
+            oro_term_light_text/2       % +Term, -Text
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(error)).
+
+/** <module> Names: prefixes, expansion and contraction of ids
+
+This module owns the namespaces oro knows.  Every prefix is registered
+here, once, so `oro:'Fork'` works from the toplevel and from planners'
+code (through rdf_meta/1), and every id crossing the protocol is
+expanded or contracted here.
+
+  - Expansion (text from a client to an IRI) follows ORO: a known prefix
+    before the first `:` is replaced by its namespace; a name without
+    `:` nor `#` is put in the default namespace `http://kb.openrobots.org#`;
+    `<...>` brackets are accepted around any IRI.
+  - Contraction (IRI to text for a client): the default namespace is
+    dropped (`baboon`), other known namespaces become `prefix:local`
+    (`owl:Thing`), anything else stays a full IRI; blank nodes become
+    `anonymousNode_<id>`.
+*/
+
+:- rdf_register_prefix(oro, 'http://kb.openrobots.org#').
+:- rdf_register_prefix(cyc, 'http://sw.opencyc.org/concept/').
+:- rdf_register_prefix(foaf, 'http://xmlns.com/foaf/0.1/').
+:- rdf_register_prefix(dbo, 'https://dbpedia.org/ontology/').
+:- rdf_register_prefix(dbp, 'https://dbpedia.org/property/').
+
+%!  oro_default_namespace(-Namespace) is det.
+%
+%   The namespace of names given without a prefix.
+
+oro_default_namespace('http://kb.openrobots.org#').
+
+%!  oro_prefix(?Prefix, ?Namespace) is nondet.
+%
+%   The prefixes of the ORO protocol: the ones used in expansion and
+%   contraction of names, in the order contraction tries them.
+
+oro_prefix(rdf,  'http://www.w3.org/1999/02/22-rdf-syntax-ns#').
+oro_prefix(rdfs, 'http://www.w3.org/2000/01/rdf-schema#').
+oro_prefix(owl,  'http://www.w3.org/2002/07/owl#').
+oro_prefix(xsd,  'http://www.w3.org/2001/XMLSchema#').
+oro_prefix(oro,  'http://kb.openrobots.org#').
+oro_prefix(cyc,  'http://sw.opencyc.org/concept/').
+oro_prefix(foaf, 'http://xmlns.com/foaf/0.1/').
+oro_prefix(dbo,  'https://dbpedia.org/ontology/').
+oro_prefix(dbp,  'https://dbpedia.org/property/').
+
+%!  oro_name_iri(+Text, -IRI) is det.
+%
+%   Expand a name as a client writes it (`Monkey`, `oro:Monkey`,
+%   `rdf:type`, `<http://x.org/a#b>`, `http://x.org/a#b`) into an IRI.
+%   Text is an atom or a string.
+
+oro_name_iri(Text, IRI) :-
+    must_be(text, Text),
+    atom_string(Atom, Text),
+    expand_name(Atom, IRI).
+
+expand_name(Atom, IRI) :-
+    sub_atom(Atom, 0, 1, _, <),
+    sub_atom(Atom, _, 1, 0, >),
+    !,
+    sub_atom(Atom, 1, _, 1, IRI).
+expand_name(Atom, IRI) :-
+    sub_atom(Atom, Before, _, After, :),
+    !,
+    sub_atom(Atom, 0, Before, _, Prefix),
+    (   oro_prefix(Prefix, NS)
+    ->  sub_atom(Atom, _, After, 0, Local),
+        atom_concat(NS, Local, IRI)
+    ;   IRI = Atom
+    ).
+expand_name(Atom, IRI) :-
+    sub_atom(Atom, _, _, _, #),
+    !,
+    IRI = Atom.
+expand_name(Atom, IRI) :-
+    oro_default_namespace(NS),
+    atom_concat(NS, Atom, IRI).
+
+%!  oro_iri_name(+IRI, -Text) is det.
+%
+%   Contract an IRI for a client: `baboon`, `owl:Thing`, or the IRI
+%   itself when no known namespace fits.  Blank nodes become
+%   `anonymousNode_<id>`.
+
+oro_iri_name(IRI, Text) :-
+    rdf_is_bnode(IRI),
+    !,
+    atom_concat('_:', Id, IRI),
+    atom_concat(anonymousNode_, Id, Text).
+oro_iri_name(IRI, Text) :-
+    oro_default_namespace(NS),
+    atom_concat(NS, Local, IRI),
+    Local \== '',
+    !,
+    Text = Local.
+oro_iri_name(IRI, Text) :-
+    oro_prefix(Prefix, NS),
+    atom_concat(NS, Local, IRI),
+    Local \== '',
+    !,
+    atomic_list_concat([Prefix, :, Local], Text).
+oro_iri_name(IRI, IRI).
+
+%!  oro_local_name(+IRI, -Local) is det.
+%
+%   The part of IRI after its last `#` (or, failing that, its last `/`);
+%   the IRI itself when it has neither.
+
+oro_local_name(IRI, Local) :-
+    (   after_last(IRI, #, Local0)
+    ->  Local = Local0
+    ;   after_last(IRI, /, Local0)
+    ->  Local = Local0
+    ;   Local = IRI
+    ).
+
+after_last(Atom, Sep, After) :-
+    sub_atom(Atom, _, 1, A, Sep),
+    sub_atom(Atom, _, A, 0, After),
+    \+ sub_atom(After, _, _, _, Sep),
+    !.
+
+%!  oro_literal_lexical(+Literal, -Lexical) is det.
+%
+%   The lexical form of an rdf_db literal term, as an atom, without
+%   quotes, datatype or language tag.
+
+oro_literal_lexical(literal(Value), Lexical) :-
+    literal_value_lexical(Value, Lexical).
+
+literal_value_lexical(type(_, Lex), Lexical) :-
+    !,
+    atomic_atom(Lex, Lexical).
+literal_value_lexical(lang(_, Lex), Lexical) :-
+    !,
+    atomic_atom(Lex, Lexical).
+literal_value_lexical(Lex, Lexical) :-
+    atomic_atom(Lex, Lexical).
+
+atomic_atom(Value, Atom) :-
+    (   atom(Value)
+    ->  Atom = Value
+    ;   format(atom(Atom), '~w', [Value])
+    ).
+
+%!  oro_term_text(+Term, -Text) is det.
+%
+%   The text of an RDF term in find, query and taxonomy results: a
+%   contracted id for a resource, the bare lexical form for a literal.
+
+oro_term_text(literal(Value), Text) :-
+    !,
+    oro_literal_lexical(literal(Value), Text).
+oro_term_text(IRI, Text) :-
+    oro_iri_name(IRI, Text).
+
+%!  oro_term_local_text(+Term, -Text) is det.
+%
+%   The text of an RDF term in getInfos results: the local name of a
+%   resource (`type`, `subClassOf`), the bare lexical form of a literal.
+
+oro_term_local_text(literal(Value), Text) :-
+    !,
+    oro_literal_lexical(literal(Value), Text).
+oro_term_local_text(IRI, Text) :-
+    rdf_is_bnode(IRI),
+    !,
+    oro_iri_name(IRI, Text).
+oro_term_local_text(IRI, Text) :-
+    oro_local_name(IRI, Text).
+
+%!  oro_term_light_text(+Term, -Text) is det.
+%
+%   ORO's "light" rendering of a term, used in statements sent back to
+%   clients (`cow weight 150.7`): resources contracted; int, double,
+%   boolean and plain literals as their lexical form; other typed
+%   literals as `'lex'^^prefix:type`.
+
+oro_term_light_text(literal(type(Type, Lex)), Text) :-
+    \+ bare_datatype(Type),
+    !,
+    oro_iri_name(Type, TypeText),
+    format(atom(Text), '\'~w\'^^~w', [Lex, TypeText]).
+oro_term_light_text(Term, Text) :-
+    oro_term_text(Term, Text).
+
+bare_datatype(Type) :-
+    rdf_equal(Type, xsd:int).
+bare_datatype(Type) :-
+    rdf_equal(Type, xsd:integer).
+bare_datatype(Type) :-
+    rdf_equal(Type, xsd:double).
+bare_datatype(Type) :-
+    rdf_equal(Type, xsd:boolean).

@@ -1,0 +1,912 @@
+:- module(oro_parse,
+          [ oro_tokenize/3,             % +Text, +Delimiter, -Tokens
+            oro_clean_value/2,          % +Text, -String
+            oro_parse_collection/3,     % +Kind, +Text, -Elements
+            oro_parse_map/2,            % +Text, -Pairs
+            oro_parse_statement/2,      % +Text, -Triple
+            oro_parse_statements/2,     % +Texts, -Triples
+            oro_is_partial/1            % +Triple
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(oro_names).
+
+/** <module> Parsing of ORO request parameters and statements
+
+This module decodes the text of request parameters as oro-server 0.8.2
+does (ORO-SPEC §2) and turns statement texts into rdf_db triples (§4.2,
+§4.3).  Everything here is pure: no predicate touches the store, so a
+batch that fails half-way has nothing to undo.
+
+  - oro_tokenize/3 is ORO's tokenizer: it splits on a delimiter only
+    outside `[ ]`, `{ }` and quotes, keeping empty tokens.
+  - oro_clean_value/2 is ORO's `cleanValue`: trim, drop one outer pair
+    of quotes, Java-unescape.
+  - oro_parse_collection/3 and oro_parse_map/2 decode `[a, "b"]` and
+    `{k:v}` parameters into lists of strings.
+  - oro_parse_statement/2 turns `subject predicate object` into
+    `rdf(S, P, O)`, where each position is an IRI, an rdf_db literal term
+    (objects only) or `var(Name)` for a `?name` token.
+
+Object tokens follow ORO's literal rules: `true`/`false` are booleans,
+quoted text is an `xsd:string`, `[+-]?[0-9]+` is an `xsd:int`, decimal and
+exponent forms are `xsd:double`, `lex^^type` is a typed literal whose
+lexical form is checked against the XSD datatype, `"text"@lang` is a
+language-tagged literal, anything else is a resource.  Lexical forms are
+kept as written, as atoms.
+
+Errors are ISO-shaped, `error(Formal, _)`:
+
+  | Formal                                        | raised for                       |
+  |-----------------------------------------------|----------------------------------|
+  | `type_error(oro_collection, Text)`            | a set/list not framed by `[ ]`   |
+  | `type_error(oro_map, Text)`                   | a map not framed by `{ }` or an entry without `:` |
+  | `syntax_error(oro_unicode_escape(Text))`      | a malformed `\uXXXX` escape      |
+  | `syntax_error(oro_statement_tokens(N, Stmt))` | a statement without 3 tokens     |
+  | `syntax_error(oro_statement_empty_token(Stmt))` | 3 tokens, one of them empty (two spaces) |
+  | `syntax_error(oro_statement_variable(Stmt))`  | a bare `?` token                 |
+  | `syntax_error(oro_invalid_datatype(Type))`    | an unknown `xsd:` datatype, or an empty one |
+  | `syntax_error(oro_lexical_form(Lex, Type))`   | a lexical form its datatype rejects |
+
+Texts inside error terms are strings.
+*/
+
+                 /*******************************
+                 *           TOKENIZER          *
+                 *******************************/
+
+%!  oro_tokenize(+Text, +Delimiter, -Tokens:list(string)) is det.
+%
+%   Split Text (an atom or a string) on Delimiter (a one-character atom
+%   or string, or a character code) the way ORO does: only where the
+%   depth of `[ ]` and of `{ }` is zero and neither the double- nor the
+%   single-quote flag is on.  The two quote flags toggle independently.
+%   A bracket, brace or quote preceded by `\` is not counted; the
+%   delimiter itself splits even after a `\`.  Depths may go negative on
+%   unbalanced closers, as in ORO.  Empty tokens are kept, so Tokens has
+%   at least one element.
+
+oro_tokenize(Text, Delimiter, Tokens) :-
+    must_be(text, Text),
+    delimiter_code(Delimiter, Code),
+    tokenize(Text, Code, Tokens).
+
+delimiter_code(Delimiter, Code) :-
+    (   integer(Delimiter)
+    ->  must_be(code, Delimiter),
+        Code = Delimiter
+    ;   must_be(text, Delimiter),
+        (   string_length(Delimiter, 1)
+        ->  string_code(1, Delimiter, Code)
+        ;   domain_error(oro_delimiter, Delimiter)
+        )
+    ).
+
+tokenize(Text, Delimiter, Tokens) :-
+    string_codes(Text, Codes),
+    tokens(Codes, Delimiter, -1, Tokens).
+
+tokens(Codes, Delimiter, Prev, [Token|Tokens]) :-
+    token(Codes, Delimiter, Prev, 0, 0, 0, 0, TokenCodes, Rest),
+    string_codes(Token, TokenCodes),
+    (   Rest == end
+    ->  Tokens = []
+    ;   tokens(Rest, Delimiter, Delimiter, Tokens)
+    ).
+
+%   token(+Codes, +Delimiter, +Prev, +Brackets, +Braces, +InDouble,
+%         +InSingle, -TokenCodes, -Rest)
+%
+%   Rest is `end` at the end of the text, else the codes after the
+%   delimiter that ended the token.  After a split every depth and flag
+%   is zero by construction, so the next token starts from zeros.
+
+token([], _, _, _, _, _, _, [], end).
+token([C|Cs], D, Prev, SB0, CB0, DQ0, SQ0, Token, Rest) :-
+    (   Prev == 0'\\
+    ->  SB = SB0, CB = CB0, DQ = DQ0, SQ = SQ0
+    ;   count(C, SB0, CB0, DQ0, SQ0, SB, CB, DQ, SQ)
+    ),
+    (   C == D,
+        SB == 0,
+        CB == 0,
+        DQ == 0,
+        SQ == 0
+    ->  Token = [],
+        Rest = Cs
+    ;   Token = [C|Token1],
+        token(Cs, D, C, SB, CB, DQ, SQ, Token1, Rest)
+    ).
+
+count(0'[,  SB0, CB,  DQ,  SQ,  SB, CB, DQ, SQ) :- !, SB is SB0+1.
+count(0'],  SB0, CB,  DQ,  SQ,  SB, CB, DQ, SQ) :- !, SB is SB0-1.
+count(0'{,  SB,  CB0, DQ,  SQ,  SB, CB, DQ, SQ) :- !, CB is CB0+1.
+count(0'},  SB,  CB0, DQ,  SQ,  SB, CB, DQ, SQ) :- !, CB is CB0-1.
+count(0'",  SB,  CB,  DQ0, SQ,  SB, CB, DQ, SQ) :- !, DQ is 1-DQ0.
+count(0'\', SB,  CB,  DQ,  SQ0, SB, CB, DQ, SQ) :- !, SQ is 1-SQ0.
+count(_,    SB,  CB,  DQ,  SQ,  SB, CB, DQ, SQ).
+
+
+                 /*******************************
+                 *          CLEAN VALUE         *
+                 *******************************/
+
+%!  oro_clean_value(+Text, -String) is det.
+%
+%   ORO's `cleanValue`: trim leading and trailing characters up to
+%   U+0020 (Java `trim()`), remove one outer pair of matching `"` or
+%   `'`, then Java-unescape: `\\ \' \" \r \f \t \n \b \uXXXX`; any other
+%   `\x` gives `x`, a lone trailing `\` is kept.  A `\uXXXX` pair
+%   encoding a UTF-16 surrogate pair gives one character.
+%
+%   @error syntax_error(oro_unicode_escape(Text)) if a `\u` is not
+%          followed by four hexadecimal digits.
+
+oro_clean_value(Text, String) :-
+    must_be(text, Text),
+    clean_value(Text, String).
+
+clean_value(Text, String) :-
+    trim(Text, Trimmed),
+    (   quoted(Trimmed, _)
+    ->  sub_string(Trimmed, 1, _, 1, Inner)
+    ;   Inner = Trimmed
+    ),
+    unescape(Inner, Text, String).
+
+%   trim(+Text, -String): Java String.trim(), without building a code
+%   list: only the whitespace at both ends is looked at.
+
+trim(Text, Trimmed) :-
+    string_length(Text, Len),
+    skip_forward(Text, 1, Len, Start),
+    skip_backward(Text, Len, Start, End),
+    Before is Start-1,
+    Length is End-Start+1,
+    sub_string(Text, Before, Length, _, Trimmed).
+
+skip_forward(Text, I, Len, Start) :-
+    (   I =< Len,
+        string_code(I, Text, C),
+        C =< 0'\s
+    ->  I1 is I+1,
+        skip_forward(Text, I1, Len, Start)
+    ;   Start = I
+    ).
+
+skip_backward(Text, I, Start, End) :-
+    (   I >= Start,
+        string_code(I, Text, C),
+        C =< 0'\s
+    ->  I1 is I-1,
+        skip_backward(Text, I1, Start, End)
+    ;   End = I
+    ).
+
+%   quoted(+Text, -Quote): Text is at least two characters long and
+%   starts and ends with the same quote character.
+
+quoted(Text, Q) :-
+    string_length(Text, Len),
+    Len >= 2,
+    string_code(1, Text, Q),
+    quote_code(Q),
+    string_code(Len, Text, Q).
+
+quote_code(0'").
+quote_code(0'\').
+
+%   unescape(+Text, +Original, -String): Original is the text quoted in
+%   the error term.
+
+unescape(Text, Original, String) :-
+    (   sub_string(Text, _, _, _, "\\")
+    ->  string_codes(Text, Codes),
+        unescape_codes(Codes, Original, Unescaped),
+        string_codes(String, Unescaped)
+    ;   String = Text
+    ).
+
+unescape_codes([], _, []).
+unescape_codes([C|Cs], Original, Out) :-
+    (   C == 0'\\
+    ->  escape(Cs, Original, Out)
+    ;   Out = [C|Out1],
+        unescape_codes(Cs, Original, Out1)
+    ).
+
+escape([], _, [0'\\]).
+escape([C|Cs], Original, Out) :-
+    (   C == 0'u
+    ->  unicode_escape(Cs, Original, Out)
+    ;   escape_char(C, E)
+    ->  Out = [E|Out1],
+        unescape_codes(Cs, Original, Out1)
+    ;   Out = [C|Out1],
+        unescape_codes(Cs, Original, Out1)
+    ).
+
+escape_char(0'r, 0'\r).
+escape_char(0'f, 0'\f).
+escape_char(0't, 0'\t).
+escape_char(0'n, 0'\n).
+escape_char(0'b, 0'\b).
+
+unicode_escape(Cs, Original, [Code|Out]) :-
+    (   hex4(Cs, Unit, Rest)
+    ->  true
+    ;   string_from_text(Original, Text),
+        throw(error(syntax_error(oro_unicode_escape(Text)), _))
+    ),
+    (   Unit >= 0xD800,
+        Unit =< 0xDBFF,
+        Rest = [0'\\, 0'u|Rest1],
+        hex4(Rest1, Low, Rest2),
+        Low >= 0xDC00,
+        Low =< 0xDFFF
+    ->  Code is 0x10000 + ((Unit-0xD800) << 10) + (Low-0xDC00),
+        unescape_codes(Rest2, Original, Out)
+    ;   Code = Unit,
+        unescape_codes(Rest, Original, Out)
+    ).
+
+hex4([A,B,C,D|Rest], Value, Rest) :-
+    code_type(A, xdigit(VA)),
+    code_type(B, xdigit(VB)),
+    code_type(C, xdigit(VC)),
+    code_type(D, xdigit(VD)),
+    Value is VA<<12 + VB<<8 + VC<<4 + VD.
+
+string_from_text(Text, String) :-
+    (   string(Text)
+    ->  String = Text
+    ;   atom_string(Text, String)
+    ).
+
+
+                 /*******************************
+                 *       SETS, LISTS, MAPS      *
+                 *******************************/
+
+%!  oro_parse_collection(+Kind, +Text, -Elements:list(string)) is det.
+%
+%   Decode a `Set<String>` (Kind `set`) or `List<String>` (Kind `list`)
+%   parameter.  The empty text and `null` (any case) give `[]`.
+%   Otherwise Text must start with `[` and end with `]` (it is not
+%   trimmed); the inside is split on `,` by oro_tokenize/3 and each
+%   element goes through oro_clean_value/2.  `[]` gives `[]`, `[ ]`
+%   gives `[""]`.  A set drops duplicates, keeping the first occurrence
+%   of each element; a list keeps order and duplicates.
+%
+%   @error domain_error(oneof([set, list]), Kind) for another Kind.
+%   @error type_error(oro_collection, Text) if Text is not framed by
+%          `[ ]`.
+%   @error syntax_error(oro_unicode_escape(Element)) from
+%          oro_clean_value/2.
+
+oro_parse_collection(Kind, Text, Elements) :-
+    must_be(atom, Kind),
+    (   collection_kind(Kind)
+    ->  true
+    ;   domain_error(oneof([set, list]), Kind)
+    ),
+    must_be(text, Text),
+    collection_elements(Text, Elements0),
+    (   Kind == set
+    ->  list_to_set(Elements0, Elements)
+    ;   Elements = Elements0
+    ).
+
+collection_kind(set).
+collection_kind(list).
+
+collection_elements(Text, Elements) :-
+    (   null_text(Text)
+    ->  Elements = []
+    ;   framed(Text, 0'[, 0'], Inner)
+    ->  (   Inner == ""
+        ->  Elements = []
+        ;   tokenize(Inner, 0',, Tokens),
+            maplist(clean_value, Tokens, Elements)
+        )
+    ;   throw(error(type_error(oro_collection, Text), _))
+    ).
+
+null_text(Text) :-
+    string_length(Text, Len),
+    (   Len =:= 0
+    ->  true
+    ;   Len =:= 4,
+        string_lower(Text, "null")
+    ).
+
+%   framed(+Text, +Open, +Close, -Inner)
+
+framed(Text, Open, Close, Inner) :-
+    string_length(Text, Len),
+    Len >= 2,
+    string_code(1, Text, Open),
+    string_code(Len, Text, Close),
+    sub_string(Text, 1, _, 1, Inner).
+
+%!  oro_parse_map(+Text, -Pairs:list(pair(string,string))) is det.
+%
+%   Decode a `Map<String,String>` parameter `{k1:v1, k2:v2}` into
+%   `Key-Value` pairs of strings, in the order written.  Braces are
+%   required; `{}` gives `[]`.  Entries are split on `,` by
+%   oro_tokenize/3; each must contain `:` and is split at its first `:`
+%   (quotes are not honoured for the colon); key and value go through
+%   oro_clean_value/2.
+%
+%   @error type_error(oro_map, Text) if Text is not framed by `{ }` or an
+%          entry has no `:`.
+
+oro_parse_map(Text, Pairs) :-
+    must_be(text, Text),
+    (   framed(Text, 0'{, 0'}, Inner)
+    ->  (   Inner == ""
+        ->  Pairs = []
+        ;   tokenize(Inner, 0',, Tokens),
+            maplist(map_entry(Text), Tokens, Pairs)
+        )
+    ;   throw(error(type_error(oro_map, Text), _))
+    ).
+
+map_entry(Text, Token, Key-Value) :-
+    (   sub_string(Token, Before, 1, After, ":")
+    ->  sub_string(Token, 0, Before, _, KeyText),
+        sub_string(Token, _, After, 0, ValueText),
+        clean_value(KeyText, Key),
+        clean_value(ValueText, Value)
+    ;   throw(error(type_error(oro_map, Text), _))
+    ).
+
+
+                 /*******************************
+                 *          STATEMENTS          *
+                 *******************************/
+
+%!  oro_parse_statement(+Text, -Triple) is det.
+%
+%   Parse a complete or partial statement `subject predicate object`
+%   into `rdf(S, P, O)`.  Text is trimmed and split on single spaces by
+%   oro_tokenize/3.  A token `?name` gives `var(name)` in any position;
+%   other subjects and predicates are names expanded by oro_name_iri/2;
+%   other objects follow ORO's literal rules (see the module doc) and
+%   give an rdf_db literal term or an IRI.
+%
+%   @error syntax_error(oro_statement_tokens(N, Stmt)) unless there are
+%          exactly three tokens; Stmt is the trimmed text (a string).
+%   @error syntax_error(oro_statement_empty_token(Stmt)) if one of the
+%          three tokens is empty.
+%   @error syntax_error(oro_statement_variable(Stmt)) for a bare `?`.
+%   @error syntax_error(oro_invalid_datatype(Type)) for `lex^^type`
+%          with an unknown XSD datatype.
+%   @error syntax_error(oro_lexical_form(Lex, Type)) for `lex^^type`
+%          whose lexical form is not valid for the datatype.
+
+oro_parse_statement(Text, Triple) :-
+    must_be(text, Text),
+    parse_statement(Text, Triple).
+
+%!  oro_parse_statements(+Texts, -Triples) is det.
+%
+%   Parse a list of statement texts with oro_parse_statement/2.  The
+%   first statement in error raises its error.
+
+oro_parse_statements(Texts, Triples) :-
+    must_be(list(text), Texts),
+    maplist(parse_statement, Texts, Triples).
+
+%!  oro_is_partial(+Triple) is semidet.
+%
+%   True if at least one position of Triple (`rdf(S, P, O)` as made by
+%   oro_parse_statement/2) is a variable `var(Name)`.
+%
+%   @error type_error(oro_triple, Triple) if Triple is not `rdf/3`.
+
+oro_is_partial(Triple) :-
+    (   compound(Triple),
+        compound_name_arity(Triple, rdf, 3)
+    ->  true
+    ;   type_error(oro_triple, Triple)
+    ),
+    Triple = rdf(S, P, O),
+    (   is_var_term(S)
+    ->  true
+    ;   is_var_term(P)
+    ->  true
+    ;   is_var_term(O)
+    ).
+
+is_var_term(Term) :-
+    subsumes_term(var(_), Term).
+
+parse_statement(Text, rdf(S, P, O)) :-
+    trim(Text, Stmt),
+    tokenize(Stmt, 0'\s, Tokens),
+    (   Tokens = [ST, PT, OT]
+    ->  true
+    ;   length(Tokens, N),
+        throw(error(syntax_error(oro_statement_tokens(N, Stmt)), _))
+    ),
+    (   ( ST == "" ; PT == "" ; OT == "" )
+    ->  throw(error(syntax_error(oro_statement_empty_token(Stmt)), _))
+    ;   true
+    ),
+    resource_token(ST, Stmt, S),
+    resource_token(PT, Stmt, P),
+    object_token(OT, Stmt, O).
+
+resource_token(Token, Stmt, Term) :-
+    (   variable_token(Token, Stmt, Var)
+    ->  Term = Var
+    ;   oro_name_iri(Token, Term)
+    ).
+
+variable_token(Token, Stmt, var(Name)) :-
+    string_code(1, Token, 0'?),
+    sub_atom(Token, 1, _, 0, Name),
+    (   Name == ''
+    ->  throw(error(syntax_error(oro_statement_variable(Stmt)), _))
+    ;   true
+    ).
+
+object_token(Token, Stmt, Term) :-
+    (   variable_token(Token, Stmt, Var)
+    ->  Term = Var
+    ;   string_codes(Token, Codes),
+        object_codes(Codes, Token, Term)
+    ).
+
+%   object_codes(+Codes, +Token, -Term): ORO's parseLiteral, in order:
+%   typed literal, boolean, quoted string, language-tagged string,
+%   integer, double, resource.
+
+object_codes(Codes, Token, Term) :-
+    (   typed_split(Codes, LexCodes, TypeCodes)
+    ->  typed_literal(LexCodes, TypeCodes, Term)
+    ;   Token == "true"
+    ->  rdf_equal(Type, xsd:boolean),
+        Term = literal(type(Type, true))
+    ;   Token == "false"
+    ->  rdf_equal(Type, xsd:boolean),
+        Term = literal(type(Type, false))
+    ;   quoted(Token, _)
+    ->  sub_string(Token, 1, _, 1, Inner),
+        unescape(Inner, Token, LexString),
+        atom_string(Lex, LexString),
+        rdf_equal(Type, xsd:string),
+        Term = literal(type(Type, Lex))
+    ;   lang_split(Codes, LexCodes, Lang)
+    ->  unescape_codes(LexCodes, Token, Unescaped),
+        atom_codes(Lex, Unescaped),
+        Term = literal(lang(Lang, Lex))
+    ;   integer_lexical(Codes)
+    ->  atom_codes(Lex, Codes),
+        rdf_equal(Type, xsd:int),
+        Term = literal(type(Type, Lex))
+    ;   decimal_lexical(Codes, true)
+    ->  atom_codes(Lex, Codes),
+        rdf_equal(Type, xsd:double),
+        Term = literal(type(Type, Lex))
+    ;   oro_name_iri(Token, Term)
+    ).
+
+%   typed_split(+Codes, -Lex, -Type): split at the last `^^` that has
+%   no quote after it, i.e. the last `^^` outside the quoted lexical
+%   form.  Types never contain quotes; deciding from the right keeps an
+%   apostrophe inside `"it's"^^xsd:string` from hiding the separator.
+
+typed_split(Codes, Lex, Type) :-
+    memberchk(0'^, Codes),
+    last_separator(Codes, 0, none, Pos),
+    integer(Pos),
+    length(Lex, Pos),
+    append(Lex, [0'^, 0'^|Type], Codes).
+
+last_separator([], _, Pos, Pos).
+last_separator([C|Cs], I, Pos0, Pos) :-
+    (   C == 0'^,
+        Cs = [0'^|_]
+    ->  Pos1 = I
+    ;   quote_code(C)
+    ->  Pos1 = none
+    ;   Pos1 = Pos0
+    ),
+    I1 is I+1,
+    last_separator(Cs, I1, Pos1, Pos).
+
+typed_literal(LexCodes0, TypeCodes0, literal(type(Type, Lex))) :-
+    string_codes(LexText, LexCodes0),
+    string_codes(TypeText, TypeCodes0),
+    (   quoted(LexText, _)
+    ->  sub_string(LexText, 1, _, 1, Inner),
+        unescape(Inner, LexText, LexString)
+    ;   LexString = LexText
+    ),
+    (   framed(TypeText, 0'<, 0'>, TypeName)
+    ->  true
+    ;   TypeName = TypeText
+    ),
+    (   TypeName == ""
+    ->  throw(error(syntax_error(oro_invalid_datatype(TypeText)), _))
+    ;   true
+    ),
+    oro_name_iri(TypeName, Type),
+    check_datatype(Type, LexString, TypeText),
+    atom_string(Lex, LexString).
+
+check_datatype(Type, LexString, TypeText) :-
+    oro_prefix(xsd, NS),
+    (   atom_concat(NS, Local, Type)
+    ->  (   xsd_lexical(Local, Check)
+        ->  string_codes(LexString, Codes),
+            (   lexical_ok(Check, Codes)
+            ->  true
+            ;   throw(error(syntax_error(oro_lexical_form(LexString, TypeText)), _))
+            )
+        ;   throw(error(syntax_error(oro_invalid_datatype(TypeText)), _))
+        )
+    ;   true
+    ).
+
+%   lang_split(+Codes, -LexCodes, -Lang): Codes is `"lex"@lang` or
+%   `'lex'@lang`.  LexCodes is the text between the quotes.
+
+lang_split([Q|Codes], Lex, Lang) :-
+    quote_code(Q),
+    memberchk(0'@, Codes),
+    reverse(Codes, Reversed),
+    append(RevTag, [0'@, Q|RevLex], Reversed),
+    !,
+    RevTag \== [],
+    reverse(RevTag, TagCodes),
+    lang_tag(TagCodes),
+    reverse(RevLex, Lex),
+    atom_codes(Lang, TagCodes).
+
+lang_tag(Codes) :-
+    phrase(lang_tag, Codes).
+
+lang_tag -->
+    alphas(1),
+    lang_subtags.
+
+lang_subtags --> [].
+lang_subtags -->
+    "-",
+    alnums(1),
+    lang_subtags.
+
+alphas(N) -->
+    [C],
+    { code_type(C, alpha), C < 128, C \== 0'_ },
+    !,
+    { N1 is N-1 },
+    alphas(N1).
+alphas(N) -->
+    { N =< 0 }.
+
+alnums(N) -->
+    [C],
+    { code_type(C, alnum), C < 128 },
+    !,
+    { N1 is N-1 },
+    alnums(N1).
+alnums(N) -->
+    { N =< 0 }.
+
+
+                 /*******************************
+                 *       LEXICAL FORMS          *
+                 *******************************/
+
+%   xsd_lexical(?Local, ?Check): the XSD datatypes oro accepts in
+%   `lex^^xsd:Local` and how their lexical forms are checked.
+
+xsd_lexical(string,             any).
+xsd_lexical(normalizedString,   any).
+xsd_lexical(token,              any).
+xsd_lexical(language,           any).
+xsd_lexical('NMTOKEN',          any).
+xsd_lexical('NMTOKENS',         any).
+xsd_lexical('Name',             any).
+xsd_lexical('NCName',           any).
+xsd_lexical('ID',               any).
+xsd_lexical('IDREF',            any).
+xsd_lexical('IDREFS',           any).
+xsd_lexical('ENTITY',           any).
+xsd_lexical('ENTITIES',         any).
+xsd_lexical('QName',            any).
+xsd_lexical('NOTATION',         any).
+xsd_lexical(anyURI,             any).
+xsd_lexical(base64Binary,       base64).
+xsd_lexical(hexBinary,          hex).
+xsd_lexical(boolean,            boolean).
+xsd_lexical(decimal,            decimal).
+xsd_lexical(double,             double).
+xsd_lexical(float,              double).
+xsd_lexical(integer,            integer(inf, inf)).
+xsd_lexical(nonPositiveInteger, integer(inf, 0)).
+xsd_lexical(negativeInteger,    integer(inf, -1)).
+xsd_lexical(nonNegativeInteger, integer(0, inf)).
+xsd_lexical(positiveInteger,    integer(1, inf)).
+xsd_lexical(long,               integer(-9223372036854775808, 9223372036854775807)).
+xsd_lexical(int,                integer(-2147483648, 2147483647)).
+xsd_lexical(short,              integer(-32768, 32767)).
+xsd_lexical(byte,               integer(-128, 127)).
+xsd_lexical(unsignedLong,       integer(0, 18446744073709551615)).
+xsd_lexical(unsignedInt,        integer(0, 4294967295)).
+xsd_lexical(unsignedShort,      integer(0, 65535)).
+xsd_lexical(unsignedByte,       integer(0, 255)).
+xsd_lexical(dateTime,           grammar(date_time(optional))).
+xsd_lexical(dateTimeStamp,      grammar(date_time(required))).
+xsd_lexical(date,               grammar(date)).
+xsd_lexical(time,               grammar(time)).
+xsd_lexical(gYear,              grammar(g_year)).
+xsd_lexical(gYearMonth,         grammar(g_year_month)).
+xsd_lexical(gMonth,             grammar(g_month)).
+xsd_lexical(gMonthDay,          grammar(g_month_day)).
+xsd_lexical(gDay,               grammar(g_day)).
+xsd_lexical(duration,           grammar(duration)).
+xsd_lexical(dayTimeDuration,    grammar(duration)).
+xsd_lexical(yearMonthDuration,  grammar(duration)).
+
+lexical_ok(any, _).
+lexical_ok(boolean, Codes) :-
+    memberchk(Codes, [`true`, `false`, `1`, `0`]).
+lexical_ok(decimal, Codes) :-
+    decimal_lexical(Codes, false).
+lexical_ok(double, Codes) :-
+    (   memberchk(Codes, [`INF`, `+INF`, `-INF`, `NaN`])
+    ->  true
+    ;   decimal_lexical(Codes, true)
+    ;   integer_lexical(Codes)
+    ).
+lexical_ok(integer(Min, Max), Codes) :-
+    integer_lexical(Codes),
+    (   Codes = [0'+|Digits]
+    ->  number_codes(Value, Digits)
+    ;   number_codes(Value, Codes)
+    ),
+    (   Min == inf
+    ->  true
+    ;   Value >= Min
+    ),
+    (   Max == inf
+    ->  true
+    ;   Value =< Max
+    ).
+lexical_ok(hex, Codes) :-
+    length(Codes, Len),
+    Len mod 2 =:= 0,
+    forall(member(C, Codes), code_type(C, xdigit(_))).
+lexical_ok(base64, Codes) :-
+    forall(member(C, Codes), base64_code(C)).
+lexical_ok(grammar(Grammar), Codes) :-
+    phrase(Grammar, Codes),
+    !.
+
+base64_code(C) :-
+    (   code_type(C, alnum),
+        C < 128
+    ->  true
+    ;   memberchk(C, `+/= `)
+    ).
+
+%   integer_lexical(+Codes): `[+-]?[0-9]+`
+
+integer_lexical(Codes) :-
+    (   Codes = [S|Digits],
+        sign_code(S)
+    ->  true
+    ;   Digits = Codes
+    ),
+    digits1(Digits, []).
+
+sign_code(0'+).
+sign_code(0'-).
+
+%   decimal_lexical(+Codes, +Exponent): `[+-]?(D+(.D*)?|.D+)`, followed
+%   by `[eE][+-]?D+` if Exponent is `true`, and not a plain integer
+%   unless there is an exponent.
+
+decimal_lexical(Codes, Exponent) :-
+    (   Codes = [S|Codes1],
+        sign_code(S)
+    ->  true
+    ;   Codes1 = Codes
+    ),
+    mantissa(Codes1, Rest, Dot),
+    (   Rest == []
+    ->  Dot == true
+    ;   Exponent == true,
+        Rest = [E|Rest1],
+        memberchk(E, `eE`),
+        (   Rest1 = [S1|Rest2],
+            sign_code(S1)
+        ->  true
+        ;   Rest2 = Rest1
+        ),
+        digits1(Rest2, [])
+    ).
+
+mantissa([0'.|Cs], Rest, true) :-
+    !,
+    digits1(Cs, Rest).
+mantissa(Cs, Rest, Dot) :-
+    digits1(Cs, Rest0),
+    (   Rest0 = [0'.|Rest1]
+    ->  Dot = true,
+        digits0(Rest1, Rest)
+    ;   Dot = false,
+        Rest = Rest0
+    ).
+
+digits1([C|Cs], Rest) :-
+    digit_code(C),
+    digits0(Cs, Rest).
+
+digits0(Cs0, Rest) :-
+    (   Cs0 = [C|Cs],
+        digit_code(C)
+    ->  digits0(Cs, Rest)
+    ;   Rest = Cs0
+    ).
+
+digit_code(C) :-
+    between(0'0, 0'9, C).
+
+%   Grammars of the XSD date, time and duration types (lexical shape
+%   and field ranges; day-of-month is not checked against the month).
+
+date_time(Zone) -->
+    date_part,
+    "T",
+    time_part,
+    zone(Zone).
+
+date -->
+    date_part,
+    zone(optional).
+
+time -->
+    time_part,
+    zone(optional).
+
+g_year -->
+    year,
+    zone(optional).
+
+g_year_month -->
+    year,
+    "-",
+    two(1, 12),
+    zone(optional).
+
+g_month -->
+    "--",
+    two(1, 12),
+    zone(optional).
+
+g_month_day -->
+    "--",
+    two(1, 12),
+    "-",
+    two(1, 31),
+    zone(optional).
+
+g_day -->
+    "---",
+    two(1, 31),
+    zone(optional).
+
+date_part -->
+    year,
+    "-",
+    two(1, 12),
+    "-",
+    two(1, 31).
+
+year -->
+    optional_minus,
+    digit,
+    digit,
+    digit,
+    digit,
+    digits_star.
+
+time_part -->
+    two(0, 24),
+    ":",
+    two(0, 59),
+    ":",
+    two(0, 59),
+    fraction.
+
+fraction -->
+    ".",
+    !,
+    digit,
+    digits_star.
+fraction -->
+    [].
+
+zone(_) -->
+    "Z",
+    !.
+zone(_) -->
+    [S],
+    { sign_code(S) },
+    !,
+    two(0, 14),
+    ":",
+    two(0, 59).
+zone(optional) -->
+    [].
+
+duration -->
+    optional_minus,
+    "P",
+    duration_fields([0'Y, 0'M, 0'D], 0, N0),
+    (   "T"
+    ->  duration_time_fields([0'H, 0'M, 0'S], 0, N1),
+        { N1 > 0 }
+    ;   { N1 = 0 }
+    ),
+    { N0 + N1 > 0 }.
+
+duration_fields([], N, N) -->
+    [].
+duration_fields([Designator|Ds], N0, N) -->
+    (   digit,
+        digits_star,
+        [Designator]
+    ->  { N1 is N0+1 }
+    ;   { N1 = N0 }
+    ),
+    duration_fields(Ds, N1, N).
+
+duration_time_fields([], N, N) -->
+    [].
+duration_time_fields([Designator|Ds], N0, N) -->
+    (   digit,
+        digits_star,
+        (   { Designator == 0'S }
+        ->  fraction
+        ;   []
+        ),
+        [Designator]
+    ->  { N1 is N0+1 }
+    ;   { N1 = N0 }
+    ),
+    duration_time_fields(Ds, N1, N).
+
+optional_minus -->
+    "-",
+    !.
+optional_minus -->
+    [].
+
+two(Min, Max) -->
+    [A, B],
+    { digit_code(A),
+      digit_code(B),
+      V is (A-0'0)*10 + B-0'0,
+      between(Min, Max, V)
+    }.
+
+digit -->
+    [C],
+    { digit_code(C) }.
+
+digits_star -->
+    [C],
+    { digit_code(C) },
+    !,
+    digits_star.
+digits_star -->
+    [].

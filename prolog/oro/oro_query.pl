@@ -1,0 +1,102 @@
+:- module(oro_query,
+          [ oro_solve/2,                % +Model, +Patterns
+            oro_pattern_holds/2,        % +Model, +Pattern
+            oro_find_values/4           % +Model, ?Template, +Patterns, -Values
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(oro_reason).
+
+/** <module> Query: conjunctive patterns over the inference closure
+
+A pattern is a term rdf(S, P, O) whose arguments are IRIs, literals or
+Prolog variables; a list of patterns is a basic graph pattern whose
+variables are shared.  oro_solve/2 enumerates its solutions over the
+inference closure of a model (oro_holds/4), evaluating at each step
+the pattern that is cheapest given the variables bound so far, so a
+query with several patterns starts from its most selective one and
+does not scan.
+*/
+
+%!  oro_solve(+Model, +Patterns) is nondet.
+%
+%   Bind the variables of Patterns (a list of rdf(S,P,O)) so that every
+%   pattern holds in Model.  Solutions may repeat when several
+%   derivations exist; use oro_find_values/4 for distinct answers.
+
+oro_solve(_, []) :-
+    !.
+oro_solve(Model, Patterns) :-
+    cheapest(Patterns, Pattern, Rest),
+    Pattern = rdf(S, P, O),
+    oro_holds(Model, S, P, O),
+    oro_solve(Model, Rest).
+
+%!  oro_pattern_holds(+Model, +Pattern) is semidet.
+%
+%   Pattern (rdf(S,P,O), possibly with variables) has at least one
+%   solution in Model.  Variables are left unbound.
+
+oro_pattern_holds(Model, rdf(S, P, O)) :-
+    \+ \+ oro_holds(Model, S, P, O).
+
+%!  oro_find_values(+Model, ?Template, +Patterns, -Values) is det.
+%
+%   Values is the ordered set of the distinct instantiations of
+%   Template over the solutions of Patterns, leaving out those holding
+%   a blank node or an unbound variable.
+
+oro_find_values(Model, Template, Patterns, Values) :-
+    findall(Template, oro_solve(Model, Patterns), Values0),
+    sort(Values0, Values1),
+    exclude(unusable_value, Values1, Values).
+
+unusable_value(Value) :-
+    \+ ground(Value),
+    !.
+unusable_value(Value) :-
+    sub_term(Sub, Value),
+    atom(Sub),
+    rdf_is_bnode(Sub),
+    !.
+
+%   cheapest(+Patterns, -Best, -Rest): pick the pattern expected to
+%   have the fewest solutions with the current bindings.
+
+cheapest([Pattern], Pattern, []) :-
+    !.
+cheapest(Patterns, Best, Rest) :-
+    map_list_to_pairs(cost, Patterns, Keyed),
+    keysort(Keyed, [_-Best|_]),
+    selectchk(Best, Patterns, Rest).
+
+cost(rdf(S, P, O), Cost) :-
+    (   nonvar(S), nonvar(O)
+    ->  Cost = 1
+    ;   nonvar(S)
+    ->  Cost = 10
+    ;   nonvar(O)
+    ->  object_cost(P, O, Cost)
+    ;   nonvar(P)
+    ->  predicate_cost(P, Cost)
+    ;   Cost = 1.0e12
+    ).
+
+object_cost(P, O, Cost) :-
+    (   O = literal(_)
+    ->  predicate_cost(P, Cost0),
+        Cost is 50 + Cost0/100
+    ;   rdf_equal(P, rdf:type)
+    ->  rdf_estimate_complexity(_, P, O, N),
+        Cost is 100 + N
+    ;   Cost = 20
+    ).
+
+predicate_cost(P, Cost) :-
+    (   var(P)
+    ->  Cost = 1.0e9
+    ;   rdf_estimate_complexity(_, P, _, N)
+    ->  Cost is 1000 + N
+    ;   Cost = 1000
+    ).

@@ -1,0 +1,366 @@
+:- module(oro_store,
+          [ oro_graph/3,                % +Model, +Layer, -Graph
+            oro_graph_layer/3,          % ?Graph, ?Model, ?Layer
+            oro_model/1,                % ?Model
+            oro_create_model/1,         % +Model
+            oro_model_alias/2,          % ?Alias, ?Model
+            oro_add_model_alias/2,      % +Alias, +Model
+            oro_resolve_model/2,        % +Name, -Model
+            oro_asserted/4,             % +Model, ?S, ?P, ?O
+            oro_asserted_count/2,       % +Model, -Count
+            oro_store_assert/3,         % +Model, +Triples, +Profile
+            oro_store_retract/2,        % +Model, +Triples
+            oro_store_write/2,          % +Action, :Goal
+            oro_schema_generation/1,    % -Generation
+            oro_schema_triple/2,        % +P, +O
+            oro_load_ontology/1,        % +File
+            oro_ontology_graph/1,       % ?Graph
+            oro_wipe_models/0,
+            oro_store_reset/0
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(semweb/turtle)).
+:- use_module(library(semweb/rdf_ntriples)).
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(debug)).
+
+:- meta_predicate
+    oro_store_write(+, 0).
+
+/** <module> The store: graphs, models and asserted triples
+
+All triples live in rdf_db.  This module owns the naming of graphs and
+is the only place that writes user triples.
+
+  - The *ontology layer* is one read-only graph per loaded ontology
+    file, shared by every model.
+  - A *model* is the knowledge of one agent: the robot is `myself`
+    (aliases `default` and the robot id).  A model owns one graph per
+    memory profile (`profile(longterm)`, ...) holding what was asserted
+    in it, and a `mask` graph listing the ontology triples it removed.
+    A triple is *visible* in a model when it is in one of the model's
+    profile graphs, or in the ontology layer and not masked.
+
+Every change runs in one rdf_transaction/2 under the `oro_write`
+mutex, so writes are serialised, atomic, and seen by rdf_monitor/2 as
+one change.  Changes to schema triples bump a generation counter that
+the reasoner uses to know when its schema closures are stale.
+*/
+
+:- dynamic
+    model_graph/3,                  % Graph, Model, Layer
+    model_alias/2,                  % Alias, Model
+    ontology_graph/1.               % Graph
+
+%!  oro_graph(+Model, +Layer, -Graph) is det.
+%
+%   The rdf_db graph holding Layer of Model.  Layer is `mask` or
+%   profile(Profile) with Profile one of `longterm`, `shortterm` or
+%   `episodic`.  This is the only predicate that spells graph names.
+
+oro_graph(Model, Layer, Graph) :-
+    layer_name(Layer, Name),
+    atomic_list_concat(['oro:', Model, '#', Name], Graph).
+
+layer_name(profile(Profile), Profile).
+layer_name(mask, mask).
+
+%!  oro_graph_layer(?Graph, ?Model, ?Layer) is nondet.
+%
+%   True when Graph is the graph of Layer of the existing Model.
+
+oro_graph_layer(Graph, Model, Layer) :-
+    model_graph(Graph, Model, Layer).
+
+%!  oro_ontology_graph(?Graph) is nondet.
+%
+%   Graph is a graph of the (read-only, shared) ontology layer.
+
+oro_ontology_graph(Graph) :-
+    ontology_graph(Graph).
+
+%!  oro_model(?Model) is nondet.
+%
+%   Model is an existing model (agent).
+
+oro_model(Model) :-
+    model_graph(_, Model, profile(longterm)).
+
+%!  oro_create_model(+Model) is det.
+%
+%   Create the graphs of Model if it does not exist yet.
+
+oro_create_model(Model) :-
+    must_be(atom, Model),
+    with_mutex(oro_write, create_model(Model)).
+
+create_model(Model) :-
+    oro_model(Model),
+    !.
+create_model(Model) :-
+    forall(model_layer(Layer),
+           ( oro_graph(Model, Layer, Graph),
+             assertz(model_graph(Graph, Model, Layer))
+           )),
+    debug(oro(store), 'Created model ~q', [Model]).
+
+model_layer(profile(longterm)).
+model_layer(profile(shortterm)).
+model_layer(profile(episodic)).
+model_layer(mask).
+
+%!  oro_model_alias(?Alias, ?Model) is nondet.
+%
+%   Alias names Model (`default` and the robot id name `myself`).
+
+oro_model_alias(Alias, Model) :-
+    model_alias(Alias, Model).
+
+%!  oro_add_model_alias(+Alias, +Model) is det.
+%
+%   Make Alias a name of Model.
+
+oro_add_model_alias(Alias, Model) :-
+    must_be(atom, Alias),
+    must_be(atom, Model),
+    with_mutex(oro_write,
+               (   model_alias(Alias, Model)
+               ->  true
+               ;   assertz(model_alias(Alias, Model))
+               )).
+
+%!  oro_resolve_model(+Name, -Model) is det.
+%
+%   Model is the model Name designates, directly or through an alias.
+%   @error existence_error(agent, Name) if there is no such model.
+
+oro_resolve_model(Name, Model) :-
+    must_be(atom, Name),
+    (   oro_model(Name)
+    ->  Model = Name
+    ;   model_alias(Name, Model0)
+    ->  Model = Model0
+    ;   existence_error(agent, Name)
+    ).
+
+%!  oro_asserted(+Model, ?S, ?P, ?O) is nondet.
+%
+%   The triple S-P-O is asserted in Model: in one of its profile
+%   graphs, or in the ontology layer and not removed from Model.
+%   A triple stored in several graphs may be returned more than once.
+
+oro_asserted(Model, S, P, O) :-
+    rdf(S, P, O, Source),
+    source_graph(Source, Graph),
+    visible_in(Graph, Model, S, P, O).
+
+%   Triples loaded from a file come with Graph:Line as their source.
+
+source_graph(Graph:_, Graph) :-
+    !.
+source_graph(Graph, Graph).
+
+visible_in(Graph, Model, _, _, _) :-
+    model_graph(Graph, Model, profile(_)),
+    !.
+visible_in(Graph, Model, S, P, O) :-
+    ontology_graph(Graph),
+    oro_graph(Model, mask, Mask),
+    \+ rdf(S, P, O, Mask).
+
+%!  oro_asserted_count(+Model, -Count) is det.
+%
+%   The number of triples in the profile graphs of Model (what was
+%   asserted through oro, not the ontology layer).
+
+oro_asserted_count(Model, Count) :-
+    aggregate_all(sum(N),
+                  ( model_graph(Graph, Model, profile(_)),
+                    rdf_graph_count(Graph, N)
+                  ),
+                  Count).
+
+rdf_graph_count(Graph, N) :-
+    (   rdf_graph(Graph)
+    ->  rdf_statistics(triples_by_graph(Graph, N))
+    ;   N = 0
+    ).
+
+%!  oro_store_write(+Action, :Goal) is semidet.
+%
+%   Run Goal as one atomic change: under the `oro_write` mutex, in one
+%   rdf_transaction/2 whose id is oro(Action).  Writers are serialised;
+%   readers are not blocked.
+
+oro_store_write(Action, Goal) :-
+    with_mutex(oro_write,
+               rdf_transaction(Goal, oro(Action))).
+
+%!  oro_store_assert(+Model, +Triples, +Profile) is det.
+%
+%   Assert each rdf(S,P,O) of Triples in Model with memory Profile.
+%   Triples already visible are left alone; a masked ontology triple
+%   is made visible again.  Must run inside oro_store_write/2.
+
+oro_store_assert(Model, Triples, Profile) :-
+    oro_graph(Model, profile(Profile), Graph),
+    oro_graph(Model, mask, Mask),
+    maplist(assert_triple(Graph, Mask, Model), Triples).
+
+assert_triple(Graph, Mask, Model, rdf(S, P, O)) :-
+    note_schema_change(P, O),
+    (   rdf(S, P, O, Mask)
+    ->  rdf_retractall(S, P, O, Mask)
+    ;   true
+    ),
+    (   oro_asserted(Model, S, P, O)
+    ->  true
+    ;   rdf_assert(S, P, O, Graph)
+    ).
+
+%!  oro_store_retract(+Model, +Triples) is det.
+%
+%   Remove each rdf(S,P,O) of Triples from Model: from its profile
+%   graphs, and, if it comes from the ontology layer, by masking it.
+%   Absent triples are ignored.  Must run inside oro_store_write/2.
+
+oro_store_retract(Model, Triples) :-
+    oro_graph(Model, mask, Mask),
+    maplist(retract_triple(Model, Mask), Triples).
+
+retract_triple(Model, Mask, rdf(S, P, O)) :-
+    note_schema_change(P, O),
+    forall(model_graph(Graph, Model, profile(_)),
+           rdf_retractall(S, P, O, Graph)),
+    (   ontology_graph(Onto),
+        rdf(S, P, O, Onto),
+        \+ rdf(S, P, O, Mask)
+    ->  rdf_assert(S, P, O, Mask)
+    ;   true
+    ).
+
+%!  oro_schema_generation(-Generation) is det.
+%
+%   A counter bumped by every change of a schema triple (see
+%   oro_schema_triple/2), in any model or in the ontology layer.
+
+oro_schema_generation(Generation) :-
+    flag(oro_schema_generation, Generation, Generation).
+
+note_schema_change(P, O) :-
+    (   oro_schema_triple(P, O)
+    ->  flag(oro_schema_generation, G, G+1)
+    ;   true
+    ).
+
+%!  oro_schema_triple(+P, +O) is semidet.
+%
+%   A triple with predicate P and object O changes the schema: the
+%   class or property hierarchy, property characteristics, restrictions
+%   or owl:sameAs.
+
+:- rdf_meta
+    oro_schema_triple(r, o),
+    schema_predicate(r),
+    meta_class(r).
+
+oro_schema_triple(P, _) :-
+    schema_predicate(P),
+    !.
+oro_schema_triple(rdf:type, O) :-
+    meta_class(O).
+
+schema_predicate(rdfs:subClassOf).
+schema_predicate(rdfs:subPropertyOf).
+schema_predicate(rdfs:domain).
+schema_predicate(rdfs:range).
+schema_predicate(owl:inverseOf).
+schema_predicate(owl:equivalentClass).
+schema_predicate(owl:equivalentProperty).
+schema_predicate(owl:sameAs).
+schema_predicate(owl:disjointWith).
+schema_predicate(owl:complementOf).
+schema_predicate(owl:propertyChainAxiom).
+schema_predicate(owl:onProperty).
+schema_predicate(owl:hasValue).
+schema_predicate(owl:someValuesFrom).
+schema_predicate(owl:allValuesFrom).
+schema_predicate(owl:intersectionOf).
+schema_predicate(owl:unionOf).
+schema_predicate(owl:propertyDisjointWith).
+schema_predicate(rdf:first).
+schema_predicate(rdf:rest).
+
+meta_class(owl:'Class').
+meta_class(rdfs:'Class').
+meta_class(rdf:'Property').
+meta_class(owl:'ObjectProperty').
+meta_class(owl:'DatatypeProperty').
+meta_class(owl:'AnnotationProperty').
+meta_class(owl:'TransitiveProperty').
+meta_class(owl:'SymmetricProperty').
+meta_class(owl:'FunctionalProperty').
+meta_class(owl:'InverseFunctionalProperty').
+meta_class(owl:'AsymmetricProperty').
+meta_class(owl:'ReflexiveProperty').
+meta_class(owl:'IrreflexiveProperty').
+meta_class(owl:'Restriction').
+
+%!  oro_load_ontology(+File) is det.
+%
+%   Load File (RDF/XML `.owl`/`.rdf`, Turtle `.ttl`, N-Triples `.nt`)
+%   into a graph of its own in the ontology layer.
+
+oro_load_ontology(File) :-
+    must_be(atom, File),
+    absolute_file_name(File, Path, [access(read)]),
+    file_format(Path, Format),
+    with_mutex(oro_write,
+               ( aggregate_all(count, ontology_graph(_), N0),
+                 N is N0 + 1,
+                 format(atom(Graph), 'oro:ontology#~d', [N]),
+                 rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
+                 assertz(ontology_graph(Graph)),
+                 flag(oro_schema_generation, G, G+1)
+               )).
+
+file_format(Path, Format) :-
+    file_name_extension(_, Ext0, Path),
+    downcase_atom(Ext0, Ext),
+    (   extension_format(Ext, Format)
+    ->  true
+    ;   domain_error(ontology_file, Path)
+    ).
+
+extension_format(owl, xml).
+extension_format(rdf, xml).
+extension_format(xml, xml).
+extension_format(ttl, turtle).
+extension_format(nt, ntriples).
+
+%!  oro_wipe_models is det.
+%
+%   Remove every model and alias, with all their triples; the ontology
+%   layer stays.  Used by reset.
+
+oro_wipe_models :-
+    with_mutex(oro_write,
+               ( forall(retract(model_graph(Graph, _, _)),
+                        rdf_unload_graph(Graph)),
+                 retractall(model_alias(_, _)),
+                 flag(oro_schema_generation, G, G+1)
+               )).
+
+%!  oro_store_reset is det.
+%
+%   Empty the whole store: every model, alias and ontology graph.
+
+oro_store_reset :-
+    with_mutex(oro_write,
+               ( rdf_reset_db,
+                 retractall(model_graph(_, _, _)),
+                 retractall(model_alias(_, _)),
+                 retractall(ontology_graph(_)),
+                 flag(oro_schema_generation, G, G+1)
+               )).

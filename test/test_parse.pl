@@ -1,0 +1,504 @@
+/*  Tests for library(oro/oro_parse): parameter decoding (ORO-SPEC §2),
+    statements and literals (§4.2, §4.3) and the decode vectors of §13.14.
+
+    Run: cd /work/main && swipl -g "run_tests" -t halt test/test_parse.pl
+*/
+
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/../prolog', Lib),
+   asserta(user:file_search_path(library, Lib)).
+
+:- use_module(library(plunit)).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(oro/oro_parse)).
+
+%   obj(+ObjectText, -Object): parse `s p ObjectText`, return the object.
+
+obj(Text, Object) :-
+    atomics_to_string(["s p ", Text], Statement),
+    oro_parse_statement(Statement, rdf(_, _, Object)).
+
+%   lit(+Type, +Lex, -Literal): the typed literal term, Type written
+%   with a prefix (xsd:int).
+
+lit(Type, Lex, literal(type(IRI, Lex))) :-
+    rdf_global_id(Type, IRI).
+
+oro(Local, IRI) :-
+    rdf_global_id(oro:Local, IRI).
+
+spec_tokens("{},f\\'\\, \\}, [r ,t,\\]\" \",r ] ,a").
+
+
+                 /*******************************
+                 *           TOKENIZER          *
+                 *******************************/
+
+:- begin_tests(tokenizer).
+
+test(spec_vector_comma, true(Tokens == ["{}", "f\\'\\", " \\}",
+                                        " [r ,t,\\]\" \",r ] ", "a"])) :-
+    spec_tokens(Text),
+    oro_tokenize(Text, ',', Tokens).
+test(spec_vector_comma_count, true(N == 5)) :-
+    spec_tokens(Text),
+    oro_tokenize(Text, ',', Tokens),
+    length(Tokens, N).
+test(spec_vector_space, true(Tokens == ["{},f\\'\\,", "\\},",
+                                        "[r ,t,\\]\" \",r ]", ",a"])) :-
+    spec_tokens(Text),
+    oro_tokenize(Text, ' ', Tokens).
+test(spec_vector_space_count, true(N == 4)) :-
+    spec_tokens(Text),
+    oro_tokenize(Text, ' ', Tokens),
+    length(Tokens, N).
+test(empty_text, true(Tokens == [""])) :-
+    oro_tokenize("", ',', Tokens).
+test(empty_tokens_kept, true(Tokens == ["a", "", "b", ""])) :-
+    oro_tokenize("a,,b,", ',', Tokens).
+test(two_spaces, true(Tokens == ["a", "", "b"])) :-
+    oro_tokenize("a  b", ' ', Tokens).
+test(double_quotes_protect, true(Tokens == ["\"a,b\"", "c"])) :-
+    oro_tokenize("\"a,b\",c", ',', Tokens).
+test(single_quotes_protect, true(Tokens == ["'a b'", "c"])) :-
+    oro_tokenize("'a b' c", ' ', Tokens).
+test(brackets_and_braces, true(Tokens == ["[a,b]", "{c,d}", "e"])) :-
+    oro_tokenize("[a,b],{c,d},e", ',', Tokens).
+test(nested_brackets, true(Tokens == ["[[a,b],[c]]", "d"])) :-
+    oro_tokenize("[[a,b],[c]],d", ',', Tokens).
+test(apostrophe_quirk, true(Tokens == ["\"it's\", b"])) :-
+    oro_tokenize("\"it's\", b", ',', Tokens).
+test(escaped_apostrophe, true(Tokens == ["\"it\\'s\"", " b"])) :-
+    oro_tokenize("\"it\\'s\", b", ',', Tokens).
+test(escaped_quote_not_counted, true(Tokens == ["a\\\"", "b"])) :-
+    oro_tokenize("a\\\",b", ',', Tokens).
+test(escaped_delimiter_still_splits, true(Tokens == ["a\\", "b"])) :-
+    oro_tokenize("a\\,b", ',', Tokens).
+test(unbalanced_closer_quirk, true(Tokens == ["a],b"])) :-
+    oro_tokenize("a],b", ',', Tokens).
+test(atom_text, true(Tokens == ["a", "b"])) :-
+    oro_tokenize('a,b', ',', Tokens).
+test(delimiter_code, true(Tokens == ["a", "b"])) :-
+    oro_tokenize("a b", 0' , Tokens).
+test(delimiter_string, true(Tokens == ["a", "b"])) :-
+    oro_tokenize("a;b", ";", Tokens).
+test(bad_delimiter, error(domain_error(oro_delimiter, ab))) :-
+    oro_tokenize("a,b", ab, _).
+test(bad_text, error(type_error(text, 42))) :-
+    oro_tokenize(42, ',', _).
+
+:- end_tests(tokenizer).
+
+
+                 /*******************************
+                 *          CLEAN VALUE         *
+                 *******************************/
+
+:- begin_tests(clean_value).
+
+test(bare, true(S == "toto")) :-
+    oro_clean_value("toto", S).
+test(double_quoted, true(S == "toto")) :-
+    oro_clean_value("\"toto\"", S).
+test(single_quoted_newline, true(S == "to\nto")) :-
+    oro_clean_value("'to\\nto'", S).
+test(inner_single_quotes, true(S == "toto 'aime' tata")) :-
+    oro_clean_value("'toto 'aime' tata'", S).
+test(escaped_outer_quotes, true(S == "\"toto \"aime\" tata\"")) :-
+    oro_clean_value("\\\"toto \"aime\" tata\\\"", S).
+test(escaped_inner_quotes, true(S == "toto \"aime\" tata")) :-
+    oro_clean_value("\"toto \\\"aime\\\" tata\"", S).
+test(decode_1_as_string, true(S == "1")) :-           % §13.14
+    oro_clean_value("1", S).
+test(null_stays, true(S == "null")) :-
+    oro_clean_value("null", S).
+test(quoted_null_stays, true(S == "null")) :-
+    oro_clean_value("\"null\"", S).
+test(trim, true(S == "a b")) :-
+    oro_clean_value(" \t a b \r\n", S).
+test(trim_then_unquote, true(S == " a ")) :-
+    oro_clean_value("  \" a \"  ", S).
+test(one_pair_only, true(S == "\"a\"")) :-
+    oro_clean_value("\"\"a\"\"", S).
+test(mismatched_quotes_kept, true(S == "\"abc'")) :-
+    oro_clean_value("\"abc'", S).
+test(lone_quote_kept, true(S == "\"")) :-
+    oro_clean_value("\"", S).
+test(empty_quotes, true(S == "")) :-
+    oro_clean_value("''", S).
+test(empty, true(S == "")) :-
+    oro_clean_value("", S).
+test(java_escapes, true(S == "\\'\"\r\f\t\n\b")) :-
+    oro_clean_value("\\\\\\'\\\"\\r\\f\\t\\n\\b", S).
+test(other_escape_drops_backslash, true(S == "xq")) :-
+    oro_clean_value("\\x\\q", S).
+test(trailing_backslash_kept, true(S == "a\\")) :-
+    oro_clean_value("a\\", S).
+test(unicode_escape, true(S == "caf\u00e9")) :-
+    oro_clean_value("caf\\u00E9", S).
+test(surrogate_pair, true(Codes == [0x1F600])) :-
+    oro_clean_value("\\uD83D\\uDE00", S),
+    string_codes(S, Codes).
+test(atom_in_string_out, true(S == "toto")) :-
+    oro_clean_value('\'toto\'', S).
+test(short_unicode, error(syntax_error(oro_unicode_escape("ab\\u12")))) :-
+    oro_clean_value("ab\\u12", _).
+test(bad_unicode, error(syntax_error(oro_unicode_escape("\\uzz00")))) :-
+    oro_clean_value("\\uzz00", _).
+test(not_text, error(type_error(text, f(x)))) :-
+    oro_clean_value(f(x), _).
+
+:- end_tests(clean_value).
+
+
+                 /*******************************
+                 *          COLLECTIONS         *
+                 *******************************/
+
+:- begin_tests(collections).
+
+test(empty_text_set, true(E == [])) :-
+    oro_parse_collection(set, "", E).
+test(empty_text_list, true(E == [])) :-              % [QUIRK] fixed
+    oro_parse_collection(list, "", E).
+test(null_any_case, all(T-E == ["null"-[], "NULL"-[], "Null"-[], nUlL-[]])) :-
+    member(T, ["null", "NULL", "Null", nUlL]),
+    oro_parse_collection(set, T, E).
+test(empty_brackets, true(E == [])) :-               % §13.14
+    oro_parse_collection(set, "[]", E).
+test(empty_brackets_list, true(E == [])) :-          % §13.14
+    oro_parse_collection(list, "[]", E).
+test(space_in_brackets, true(E == [""])) :-          % [QUIRK]
+    oro_parse_collection(set, "[ ]", E).
+test(quoted_elements, true(E == ["toto", "tata"])) :- % §13.14
+    oro_parse_collection(set, "[\"toto\",\"tata\"]", E).
+test(bare_elements_trimmed, true(E == ["a", "b", "c"])) :-
+    oro_parse_collection(list, "[a, b ,c]", E).
+test(set_drops_duplicates, true(E == ["a", "b"])) :-
+    oro_parse_collection(set, "[a, \"b\", 'a', b]", E).
+test(list_keeps_order_and_duplicates, true(E == ["b", "a", "b"])) :-
+    oro_parse_collection(list, "[b,a,b]", E).
+test(liboro_style, true(E == ["a", "b \"c\""])) :-
+    oro_parse_collection(set, "[\"a\",\"b \\\"c\\\"\"]", E).
+test(pyoro_style, true(E == ["a b c", "d e \"f\""])) :-
+    oro_parse_collection(list, "['a b c', 'd e \"f\"']", E).
+test(telnet_style, true(E == ["human rdf:type Human",
+                              "human rdfs:label \"Ramses\""])) :-
+    oro_parse_collection(list,
+                         "[human rdf:type Human, human rdfs:label \"Ramses\"]",
+                         E).
+test(nested_stays_string, true(E == ["[a,b]", "c"])) :-
+    oro_parse_collection(list, "[[a,b], c]", E).
+test(apostrophe_quirk, true(E == ["\"it's\", b"])) :-
+    oro_parse_collection(list, "[\"it's\", b]", E).
+test(escaped_apostrophe, true(E == ["it's", "b"])) :-
+    oro_parse_collection(list, "[\"it\\'s\", b]", E).
+test(atom_text, true(E == ["a"])) :-
+    oro_parse_collection(set, '[a]', E).
+test(leading_space, error(type_error(oro_collection, " [a]"))) :-
+    oro_parse_collection(set, " [a]", _).
+test(trailing_space, error(type_error(oro_collection, "[a] "))) :-
+    oro_parse_collection(set, "[a] ", _).
+test(braces_as_set, error(type_error(oro_collection, "{}"))) :- % §13.14
+    oro_parse_collection(set, "{}", _).
+test(unframed, error(type_error(oro_collection, "a,b"))) :-
+    oro_parse_collection(list, "a,b", _).
+test(open_only, error(type_error(oro_collection, "["))) :-
+    oro_parse_collection(list, "[", _).
+test(bad_kind, error(domain_error(oneof([set, list]), bag))) :-
+    oro_parse_collection(bag, "[]", _).
+test(bad_element_escape, error(syntax_error(oro_unicode_escape(" \\u1")))) :-
+    oro_parse_collection(list, "[a, \\u1]", _).
+
+:- end_tests(collections).
+
+
+                 /*******************************
+                 *              MAP             *
+                 *******************************/
+
+:- begin_tests(map).
+
+test(empty, true(P == [])) :-                        % §13.14
+    oro_parse_map("{}", P).
+test(spec_vector, true(P == ["1"-"toto", "2"-"tata"])) :- % §13.14
+    oro_parse_map("{1:\"toto\",2:\"tata\"}", P).
+test(liboro_style, true(P == ["k"-"v", "k2"-"v 2"])) :-
+    oro_parse_map("{\"k\":\"v\", \"k2\" : 'v 2'}", P).
+test(first_colon_splits, true(P == ["url"-"http://x.org/a"])) :-
+    oro_parse_map("{url:http://x.org/a}", P).
+test(brackets_as_map, error(type_error(oro_map, "[]"))) :- % §13.14
+    oro_parse_map("[]", _).
+test(entry_without_colon, error(type_error(oro_map, "{a:b, c}"))) :-
+    oro_parse_map("{a:b, c}", _).
+test(unframed, error(type_error(oro_map, "a:b"))) :-
+    oro_parse_map("a:b", _).
+
+:- end_tests(map).
+
+
+                 /*******************************
+                 *          STATEMENTS          *
+                 *******************************/
+
+:- begin_tests(statements).
+
+test(default_namespace, true(T == rdf(S, P, O))) :-
+    oro_parse_statement("johnny rdf:type Human", T),
+    oro(johnny, S),
+    rdf_global_id(rdf:type, P),
+    oro('Human', O).
+test(oro_prefix, true(T == rdf(S, P, O))) :-
+    oro_parse_statement("oro:Monkey rdfs:subClassOf owl:Thing", T),
+    oro('Monkey', S),
+    rdf_global_id(rdfs:subClassOf, P),
+    rdf_global_id(owl:'Thing', O).
+test(full_iris, true(T == rdf('http://x.org/a#b', 'http://x.org/p', O))) :-
+    oro_parse_statement("<http://x.org/a#b> <http://x.org/p> http://x.org/a#c", T),
+    O = 'http://x.org/a#c'.
+test(unknown_prefix_kept, true(S == 'foo:bar')) :-
+    oro_parse_statement("foo:bar p o", rdf(S, _, _)).
+test(trimmed, true(T == rdf(S, P, O))) :-
+    oro_parse_statement("\t johnny likes apple \r\n", T),
+    oro(johnny, S),
+    oro(likes, P),
+    oro(apple, O).
+test(atom_text, true(T == rdf(S, P, O))) :-
+    oro_parse_statement('a b c', T),
+    oro(a, S),
+    oro(b, P),
+    oro(c, O).
+test(quoted_subject_is_a_name, true(S == IRI)) :-
+    oro_parse_statement("'150' p o", rdf(S, _, _)),
+    oro('\'150\'', IRI).
+test(resource_object, true(O == IRI)) :-
+    obj("Dudule", O),
+    oro('Dudule', IRI).
+test(quoted_object_with_spaces, true(O == L)) :-
+    obj("\"Ramses the robot\"", O),
+    lit(xsd:string, 'Ramses the robot', L).
+test(variable_object, true(T = rdf(_, _, var(x)))) :-
+    oro_parse_statement("johnny likes ?x", T).
+test(variable_subject, true(T = rdf(var(who), _, _))) :-
+    oro_parse_statement("?who rdf:type Human", T).
+test(variable_predicate, true(T = rdf(_, var(p), _))) :-
+    oro_parse_statement("johnny ?p apple", T).
+test(all_variables, true(T == rdf(var(s), var(p), var(o)))) :-
+    oro_parse_statement("?s ?p ?o", T).
+test(partial, true) :-
+    oro_parse_statement("?x rdf:type Human", T),
+    oro_is_partial(T).
+test(partial_object, true) :-
+    oro_parse_statement("johnny likes ?x", T),
+    oro_is_partial(T).
+test(complete_not_partial, fail) :-
+    oro_parse_statement("johnny likes apple", T),
+    oro_is_partial(T).
+test(quoted_question_mark_not_variable, fail) :-
+    oro_parse_statement("johnny says \"?x\"", T),
+    oro_is_partial(T).
+test(is_partial_type, error(type_error(oro_triple, foo))) :-
+    oro_is_partial(foo).
+test(batch, true(Ts == [rdf(A, P1, B), rdf(var(x), P1, C)])) :-
+    oro_parse_statements(["a p b", "?x p 'c'"], Ts),
+    oro(a, A),
+    oro(p, P1),
+    oro(b, B),
+    lit(xsd:string, c, C).
+test(empty_batch, true(Ts == [])) :-
+    oro_parse_statements([], Ts).
+
+:- end_tests(statements).
+
+
+                 /*******************************
+                 *           LITERALS           *
+                 *******************************/
+
+:- begin_tests(literals).
+
+%   The valid objects of ORO-SPEC §4.2, with the literal each gives.
+
+valid("true",                      xsd:boolean, true).
+valid("false",                     xsd:boolean, false).
+valid("true^^xsd:boolean",         xsd:boolean, true).
+valid("\"true\"^^xsd:boolean",     xsd:boolean, true).
+valid("'true'^^xsd:boolean",       xsd:boolean, true).
+valid("1^^xsd:boolean",            xsd:boolean, '1').
+valid("150",                       xsd:int,     '150').
+valid("\"150\"^^xsd:int",          xsd:int,     '150').
+valid("150^^xsd:int",              xsd:int,     '150').
+valid("\"150\"^^<http://www.w3.org/2001/XMLSchema#int>", xsd:int, '150').
+valid("150^^xsd:integer",          xsd:integer, '150').
+valid("150.0",                     xsd:double,  '150.0').
+valid("\"150\"^^xsd:double",       xsd:double,  '150').
+valid("150^^xsd:double",           xsd:double,  '150').
+valid("\"150\"^^xsd:float",        xsd:float,   '150').
+valid("'Dudule'",                  xsd:string,  'Dudule').
+valid("\"Dudule\"",                xsd:string,  'Dudule').
+valid("Dudule^^xsd:string",        xsd:string,  'Dudule').
+
+test(spec_valid, forall(valid(Text, Type, Lex)), true(O == L)) :-
+    obj(Text, O),
+    lit(Type, Lex, L).
+
+test(true_not_resource, true(O == L)) :-
+    obj("true", O),
+    lit(xsd:boolean, true, L).
+test(true_case_sensitive, true(O == IRI)) :-
+    obj("True", O),
+    oro('True', IRI).
+test(negative_int, true(O == L)) :-
+    obj("-3", O),
+    lit(xsd:int, '-3', L).
+test(signed_int_kept, true(O == L)) :-
+    obj("+007", O),
+    lit(xsd:int, '+007', L).
+test(double, true(O == L)) :-
+    obj("48.5", O),
+    lit(xsd:double, '48.5', L).
+test(double_exponent, true(O == L)) :-
+    obj("-3.0e2", O),
+    lit(xsd:double, '-3.0e2', L).
+test(double_leading_dot, true(O == L)) :-
+    obj(".5", O),
+    lit(xsd:double, '.5', L).
+test(exponent_without_dot_is_double, true(O == L)) :-
+    obj("1e5", O),
+    lit(xsd:double, '1e5', L).
+test(nan_is_resource, true(O == IRI)) :-
+    obj("NaN", O),
+    oro('NaN', IRI).
+test(java_suffix_is_resource, true(O == IRI)) :-
+    obj("1d", O),
+    oro('1d', IRI).
+test(single_quoted_escape, true(O == L)) :-
+    obj("'it\\'s'", O),
+    lit(xsd:string, 'it\'s', L).
+test(empty_string, true(O == L)) :-
+    obj("\"\"", O),
+    lit(xsd:string, '', L).
+test(separator_inside_quotes, true(O == L)) :-
+    obj("\"a^^b\"", O),
+    lit(xsd:string, 'a^^b', L).
+test(last_separator, true(O == L)) :-
+    obj("\"a^^b\"^^xsd:string", O),
+    lit(xsd:string, 'a^^b', L).
+test(apostrophe_in_typed, true(O == L)) :-
+    obj("\"it's\"^^xsd:string", O),
+    lit(xsd:string, 'it\'s', L).
+test(angle_prefixed_type, true(O == L)) :-
+    obj("150^^<xsd:int>", O),
+    lit(xsd:int, '150', L).
+test(non_xsd_type_kept, true(O == literal(type('http://x.org/t#celsius', '21')))) :-
+    obj("21^^<http://x.org/t#celsius>", O).
+test(oro_type_expanded, true(O == literal(type(T, '21')))) :-
+    obj("21^^celsius", O),
+    oro(celsius, T).
+test(long, true(O == L)) :-
+    obj("9000000000^^xsd:long", O),
+    lit(xsd:long, '9000000000', L).
+test(non_negative, true(O == L)) :-
+    obj("0^^xsd:nonNegativeInteger", O),
+    lit(xsd:nonNegativeInteger, '0', L).
+test(decimal, true(O == L)) :-
+    obj("-1.50^^xsd:decimal", O),
+    lit(xsd:decimal, '-1.50', L).
+test(double_inf, true(O == L)) :-
+    obj("INF^^xsd:double", O),
+    lit(xsd:double, 'INF', L).
+test(boolean_zero, true(O == L)) :-
+    obj("0^^xsd:boolean", O),
+    lit(xsd:boolean, '0', L).
+test(date_time, true(O == L)) :-
+    obj("2014-03-01T10:20:30.5+01:00^^xsd:dateTime", O),
+    lit(xsd:dateTime, '2014-03-01T10:20:30.5+01:00', L).
+test(date, true(O == L)) :-
+    obj("\"2014-03-01\"^^xsd:date", O),
+    lit(xsd:date, '2014-03-01', L).
+test(duration, true(O == L)) :-
+    obj("P1DT2H^^xsd:duration", O),
+    lit(xsd:duration, 'P1DT2H', L).
+test(any_uri, true(O == L)) :-
+    obj("'http://x.org'^^xsd:anyURI", O),
+    lit(xsd:anyURI, 'http://x.org', L).
+test(lang_double_quoted, true(O == literal(lang(fr, chat)))) :-
+    obj("\"chat\"@fr", O).
+test(lang_single_quoted, true(O == literal(lang('en-GB', 'big cat')))) :-
+    obj("'big cat'@en-GB", O).
+test(at_without_quotes_is_resource, true(O == IRI)) :-
+    obj("chat@fr", O),
+    oro('chat@fr', IRI).
+
+:- end_tests(literals).
+
+
+                 /*******************************
+                 *            ERRORS            *
+                 *******************************/
+
+:- begin_tests(errors).
+
+test(two_tokens,
+     error(syntax_error(oro_statement_tokens(2, "johnny likes")))) :-
+    oro_parse_statement("johnny likes", _).
+test(four_tokens,
+     error(syntax_error(oro_statement_tokens(4, "a b c d")))) :-
+    oro_parse_statement("a b c d", _).
+test(empty_statement,
+     error(syntax_error(oro_statement_tokens(1, "")))) :-
+    oro_parse_statement("   ", _).
+test(double_space_four_tokens,                     % [QUIRK]
+     error(syntax_error(oro_statement_tokens(4, "a  b c")))) :-
+    oro_parse_statement("  a  b c ", _).
+test(double_space_three_tokens,
+     error(syntax_error(oro_statement_empty_token("a  b")))) :-
+    oro_parse_statement("a  b", _).
+test(bare_question_mark,
+     error(syntax_error(oro_statement_variable("? p o")))) :-
+    oro_parse_statement("? p o", _).
+test(true_as_int,                                  % §4.2 invalid
+     error(syntax_error(oro_lexical_form("true", "xsd:int")))) :-
+    obj("true^^xsd:int", _).
+test(double_as_int,                                % §4.2 invalid
+     error(syntax_error(oro_lexical_form("150.0", "xsd:int")))) :-
+    obj("150.0^^xsd:int", _).
+test(int_out_of_range,
+     error(syntax_error(oro_lexical_form("300", "xsd:byte")))) :-
+    obj("300^^xsd:byte", _).
+test(negative_unsigned,
+     error(syntax_error(oro_lexical_form("-1", "xsd:unsignedInt")))) :-
+    obj("-1^^xsd:unsignedInt", _).
+test(word_as_double,
+     error(syntax_error(oro_lexical_form("abc", "xsd:double")))) :-
+    obj("'abc'^^xsd:double", _).
+test(exponent_as_decimal,
+     error(syntax_error(oro_lexical_form("1e3", "xsd:decimal")))) :-
+    obj("1e3^^xsd:decimal", _).
+test(yes_as_boolean,
+     error(syntax_error(oro_lexical_form("yes", "xsd:boolean")))) :-
+    obj("yes^^xsd:boolean", _).
+test(bad_date,
+     error(syntax_error(oro_lexical_form("2014-13-01", "xsd:date")))) :-
+    obj("2014-13-01^^xsd:date", _).
+test(unknown_xsd_type,
+     error(syntax_error(oro_invalid_datatype("xsd:foo")))) :-
+    obj("1^^xsd:foo", _).
+test(unknown_xsd_full_iri,
+     error(syntax_error(oro_invalid_datatype("<http://www.w3.org/2001/XMLSchema#foo>")))) :-
+    obj("1^^<http://www.w3.org/2001/XMLSchema#foo>", _).
+test(empty_type,
+     error(syntax_error(oro_invalid_datatype("")))) :-
+    obj("1^^", _).
+test(bad_unicode_in_literal,
+     error(syntax_error(oro_unicode_escape(_)))) :-
+    obj("\"\\u00\"", _).
+test(batch_first_error,
+     error(syntax_error(oro_statement_tokens(2, "b c")))) :-
+    oro_parse_statements(["a p o", "b c", "d e"], _).
+test(batch_not_list, error(type_error(list(text), foo))) :-
+    oro_parse_statements(foo, _).
+test(statement_not_text, error(type_error(text, 42))) :-
+    oro_parse_statement(42, _).
+
+:- end_tests(errors).
