@@ -149,9 +149,9 @@ statement_triple(Statement, rdf(S, P, O), B0, B) :-
     ->  oro_parse_statement(Statement, rdf(S0, P0, O0)),
         foldl(bind_var, [S0-S, P0-P, O0-O], B0, B)
     ;   Statement = rdf(S0, P0, O0)
-    ->  resource_term(S0, S),
-        resource_term(P0, P),
-        object_term(O0, O),
+    ->  oro_resource(S0, S),
+        oro_resource(P0, P),
+        oro_object(O0, O),
         B = B0
     ;   type_error(oro_statement, Statement)
     ).
@@ -170,40 +170,6 @@ bind_var(var(Name)-Var, B0, B) :-
     ;   B = [Name=Var|B0]
     ).
 bind_var(Term-Term, B, B).
-
-resource_term(Var, Var) :-
-    var(Var),
-    !.
-resource_term(Prefix:Local, IRI) :-
-    !,
-    rdf_global_id(Prefix:Local, IRI).
-resource_term(Name, IRI) :-
-    atom(Name),
-    !,
-    oro_name_iri(Name, IRI).
-resource_term(Term, _) :-
-    type_error(oro_resource, Term).
-
-object_term(Var, Var) :-
-    var(Var),
-    !.
-object_term(literal(Value), literal(Value)) :-
-    !.
-object_term(N, literal(type(Type, Lex))) :-
-    number(N),
-    !,
-    (   integer(N)
-    ->  rdf_equal(xsd:int, Type)
-    ;   rdf_equal(xsd:double, Type)
-    ),
-    atom_number(Lex, N).
-object_term(S, literal(type(Type, Lex))) :-
-    string(S),
-    !,
-    rdf_equal(xsd:string, Type),
-    atom_string(Lex, S).
-object_term(Term, IRI) :-
-    resource_term(Term, IRI).
 
 complete_triples(Statements, Triples) :-
     oro_statements(Statements, Triples, _),
@@ -259,22 +225,25 @@ pattern_triple(Pattern, Triple) :-
     oro_statements([Pattern], [Triple], _).
 
 clear_triples(Model, Patterns) :-
-    findall(rdf(S, P, O),
-            ( member(rdf(S, P, O), Patterns),
-              asserted_value(Model, S, P, O)
+    findall(Match,
+            ( member(Pattern, Patterns),
+              asserted_match(Model, Pattern, Match)
             ),
             Matches0),
     sort(Matches0, Matches),
     oro_store_retract(Model, Matches).
 
-asserted_value(Model, S, P, O) :-
+%   asserted_match(+Model, +Pattern, -Triple): Triple is an asserted
+%   triple matching Pattern, literals compared by value.
+
+asserted_match(Model, rdf(S, P, O), rdf(S, P, Stored)) :-
     (   nonvar(O),
         O = literal(_)
-    ->  oro_asserted(Model, S, P, Literal),
-        Literal = literal(_),
-        oro_literal_match(O, Literal),
-        O = Literal
-    ;   oro_asserted(Model, S, P, O)
+    ->  oro_asserted(Model, S, P, Stored),
+        Stored = literal(_),
+        oro_literal_match(O, Stored)
+    ;   Stored = O,
+        oro_asserted(Model, S, P, Stored)
     ).
 
 %!  oro_update(+Model, +Statements) is det.

@@ -130,7 +130,9 @@ label_match(Model, Text, Resource) :-
 
 name_match(Model, Text, Resource) :-
     downcase_atom(Text, Lower),
-    rdf_resource(Resource),
+    (   rdf_resource(Resource)
+    ;   rdf_current_predicate(Resource)
+    ),
     \+ rdf_is_bnode(Resource),
     oro_local_name(Resource, Local),
     downcase_atom(Local, Lower),

@@ -7,7 +7,9 @@
             oro_literal_lexical/2,      % +Literal, -Lexical
             oro_term_text/2,            % +Term, -Text
             oro_term_local_text/2,      % +Term, -Text
-            oro_term_light_text/2       % +Term, -Text
+            oro_term_light_text/2,      % +Term, -Text
+            oro_resource/2,             % ?Term, -IRI
+            oro_object/2                % ?Term, -Object
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -205,3 +207,57 @@ bare_datatype(Type) :-
     rdf_equal(Type, xsd:double).
 bare_datatype(Type) :-
     rdf_equal(Type, xsd:boolean).
+
+%!  oro_resource(?Term, -IRI) is det.
+%
+%   Normalise a resource given by a Prolog programmer: `fork1` (no
+%   colon: the default namespace), `oro:'Fork'` (a registered prefix),
+%   or a full IRI.  A variable is left alone.
+%
+%   @error type_error(oro_resource, Term) for anything else.
+
+oro_resource(Var, IRI) :-
+    var(Var),
+    !,
+    IRI = Var.
+oro_resource(Prefix:Local, IRI) :-
+    !,
+    rdf_global_id(Prefix:Local, IRI).
+oro_resource(Name, IRI) :-
+    atom(Name),
+    !,
+    (   sub_atom(Name, _, _, _, :)
+    ->  IRI = Name
+    ;   expand_name(Name, IRI)
+    ).
+oro_resource(Term, _) :-
+    type_error(oro_resource, Term).
+
+%!  oro_object(?Term, -Object) is det.
+%
+%   Normalise the object of a statement given by a Prolog programmer:
+%   an rdf_db literal term, a number (xsd:int or xsd:double), a string
+%   (xsd:string), or a resource as for oro_resource/2.
+
+oro_object(Var, Object) :-
+    var(Var),
+    !,
+    Object = Var.
+oro_object(literal(Value), Object) :-
+    !,
+    Object = literal(Value).
+oro_object(N, literal(type(Type, Lex))) :-
+    number(N),
+    !,
+    (   integer(N)
+    ->  rdf_equal(xsd:int, Type)
+    ;   rdf_equal(xsd:double, Type)
+    ),
+    atom_number(Lex, N).
+oro_object(S, literal(type(Type, Lex))) :-
+    string(S),
+    !,
+    rdf_equal(xsd:string, Type),
+    atom_string(Lex, S).
+oro_object(Term, IRI) :-
+    oro_resource(Term, IRI).

@@ -85,8 +85,12 @@ delimiter_code(Delimiter, Code) :-
     ).
 
 tokenize(Text, Delimiter, Tokens) :-
-    string_codes(Text, Codes),
-    tokens(Codes, Delimiter, -1, Tokens).
+    (   split_string(Text, "[]{}\"'\\", "", [_])
+    ->  char_code(Sep, Delimiter),
+        split_string(Text, Sep, "", Tokens)     % nothing to track
+    ;   string_codes(Text, Codes),
+        tokens(Codes, Delimiter, -1, Tokens)
+    ).
 
 tokens(Codes, Delimiter, Prev, [Token|Tokens]) :-
     token(Codes, Delimiter, Prev, 0, 0, 0, 0, TokenCodes, Rest),

@@ -19,6 +19,7 @@
 :- use_module(library(ordsets)).
 :- use_module(library(debug)).
 :- use_module(oro_store).
+:- use_module(oro_names).
 
 /** <module> Reasoning: the inference closure of a model
 
@@ -458,7 +459,10 @@ oro_meta_namespace(IRI) :-
 %   semidet.  Literal objects match by value (`12` matches
 %   `"12"^^xsd:integer`; strings ignore language tags).
 
-oro_holds(Model, S, P, O) :-
+oro_holds(Model, S0, P0, O0) :-
+    oro_resource(S0, S),
+    oro_resource(P0, P),
+    oro_object(O0, O),
     schema(Model, Key),
     (   ground(S-P-O)
     ->  holds(Key, Model, S, P, O),
@@ -571,15 +575,15 @@ literal_asserted(Model, S, Q, Pattern) :-
     (   nonvar(S)
     ->  oro_asserted(Model, S, Q, Literal),
         oro_literal_match(Pattern, Literal)
-    ;   literal_key(Pattern, string(Lex))
-    ->  rdf(S, Q, literal(exact(Lex), Value)),
+    ;   literal_key(Pattern, string(Text))
+    ->  atom_string(Lex, Text),
+        rdf(S, Q, literal(exact(Lex), Value)),
         Literal = literal(Value),
         oro_literal_match(Pattern, Literal),
         once(oro_asserted(Model, S, Q, Literal))
     ;   oro_asserted(Model, S, Q, Literal),
         oro_literal_match(Pattern, Literal)
-    ),
-    Pattern = Literal.
+    ).
 
 %!  oro_literal_match(+Pattern, +Literal) is semidet.
 %
@@ -887,10 +891,14 @@ oro_type(Model, X, Class) :-
 %   Sub is a (reflexive, transitive) sub-class of Super in Model;
 %   every class is a sub-class of owl:Thing.
 
-oro_subclass(Model, Sub, Super) :-
+oro_subclass(Model, Sub0, Super0) :-
+    oro_resource(Sub0, Sub),
+    oro_resource(Super0, Super),
     schema(Model, Key),
     (   var(Sub), var(Super)
     ->  s_sub(Key, Sub, Super)
+    ;   nonvar(Sub), nonvar(Super)
+    ->  once(sub_class_of(Key, Sub, Super))
     ;   sub_class_of(Key, Sub, Super)
     ).
 
@@ -898,11 +906,15 @@ oro_subclass(Model, Sub, Super) :-
 %
 %   Sub is a (reflexive, transitive) sub-property of Super in Model.
 
-oro_subproperty(Model, Sub, Super) :-
+oro_subproperty(Model, Sub0, Super0) :-
+    oro_resource(Sub0, Sub),
+    oro_resource(Super0, Super),
     schema(Model, Key),
     (   nonvar(Sub),
         \+ s_prop(Key, Sub, _)
     ->  Super = Sub
+    ;   nonvar(Sub), nonvar(Super)
+    ->  once(s_subprop(Key, Sub, Super))
     ;   s_subprop(Key, Sub, Super)
     ).
 
@@ -911,7 +923,8 @@ oro_subproperty(Model, Sub, Super) :-
 %   Class is a class of Model: declared, used in the class hierarchy,
 %   as a domain or range, or as the type of something.
 
-oro_class(Model, Class) :-
+oro_class(Model, Class0) :-
+    oro_resource(Class0, Class),
     schema(Model, Key),
     (   nonvar(Class)
     ->  class_key(Key, Model, Class)
@@ -939,7 +952,8 @@ class_key(Key, Model, Class) :-
 %   declared is typed by its values, as OWL reasoners do: `datatype`
 %   if it has a literal value, `object` otherwise.
 
-oro_property(Model, Property, Kind) :-
+oro_property(Model, Property0, Kind) :-
+    oro_resource(Property0, Property),
     schema(Model, Key),
     (   nonvar(Property)
     ->  (   s_prop(Key, Property, Kind0)
@@ -975,7 +989,8 @@ used_kind(_, _, Kind, Kind).
 %
 %   X is a named individual of Model (an instance of owl:Thing).
 
-oro_individual(Model, X) :-
+oro_individual(Model, X0) :-
+    oro_resource(X0, X),
     schema(Model, Key),
     individual_key(Key, Model, X).
 
@@ -986,7 +1001,8 @@ oro_individual_key(Key, Model, X) :-
 %
 %   Y is X or an individual owl:sameAs X.
 
-oro_same_individual(Model, X, Y) :-
+oro_same_individual(Model, X0, Y) :-
+    oro_resource(X0, X),
     schema(Model, Key),
     same(Key, X, Y).
 

@@ -1,0 +1,662 @@
+:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
+:- use_module(library(plunit)).
+:- use_module(library(oro)).
+
+/*  Tests for the knowledge operations (ORO-SPEC §6.1-§6.3, vectors of
+    §13.2-§13.5 and the seed session of §13.13): add, remove, clear,
+    update, check, find, reset, the robot id alias and save.  Consistency
+    checks (checkConsistency, safeAdd) are not covered here.
+
+    Run: cd /work/main && swipl -g run_tests -t halt test/test_knowledge.pl
+*/
+
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(filesex)).
+
+:- dynamic knowledge_test_dir/1.
+
+:- prolog_load_context(directory, Dir),
+   retractall(knowledge_test_dir(_)),
+   assertz(knowledge_test_dir(Dir)).
+
+knowledge_fixture(File, Path) :-
+    knowledge_test_dir(Dir),
+    atomic_list_concat([Dir, '/fixtures/', File], Path).
+
+%   Fresh stores: the test ontology alone, or the common-sense one.
+
+knowledge_testsuite :-
+    knowledge_fixture('testsuite.ttl', File),
+    oro_init([commonsense(false), ontologies([File])]).
+
+knowledge_commonsense :-
+    oro_init([]).
+
+%   knowledge_find(+Var, +Patterns, -Names): oro_find/4 on the robot
+%   model, values contracted (oro_term_text/2) and sorted.
+
+knowledge_find(Var, Patterns, Names) :-
+    oro_find(myself, Var, Patterns, Values),
+    maplist(oro_term_text, Values, Names0),
+    sort(Names0, Names).
+
+%   knowledge_count(+Var, +Patterns, -Count): number of values of Var.
+
+knowledge_count(Var, Patterns, Count) :-
+    oro_find(myself, Var, Patterns, Values),
+    length(Values, Count).
+
+%   knowledge_about(+Name, -Count): number of distinct P-O pairs that
+%   hold with Name as subject.
+
+knowledge_about(Name, Count) :-
+    oro_find(myself, P-O, [rdf(Name, P, O)], Pairs),
+    length(Pairs, Count).
+
+%   knowledge_tmp_dir(-Dir): a new empty directory for saved files.
+
+knowledge_tmp_dir(Dir) :-
+    tmp_file(oro_save, Dir),
+    make_directory(Dir).
+
+
+                 /*******************************
+                 *              ADD             *
+                 *******************************/
+
+:- begin_tests(add).
+
+test(text_statements, [setup(knowledge_testsuite)]) :-
+    oro_add(myself, ["horse rdf:type Animal", "horse eats hay"]),
+    oro_check(myself, ["horse rdf:type Animal", "horse eats hay"]).
+test(term_statements, [setup(knowledge_testsuite)]) :-
+    oro_add(myself, [rdf(horse, rdf:type, 'Animal'), rdf(horse, age, 7)]),
+    oro_check(myself, ["horse rdf:type Animal", "horse age 7"]).
+test(prefixed_names, [setup(knowledge_testsuite)]) :-
+    oro_add(myself, ["oro:horse rdf:type oro:Animal"]),
+    oro_check(myself, ["horse rdf:type Animal"]).
+test(known_statement_ignored, [ setup(knowledge_testsuite),
+                                true(After == Before)
+                              ]) :-
+    knowledge_about(gorilla, Before),
+    oro_add(myself, ["gorilla rdf:type Monkey", "gorilla age 12"]),
+    knowledge_about(gorilla, After).
+test(malformed_statement, [ setup(knowledge_testsuite),
+                            error(syntax_error(oro_statement_tokens(2, _)))
+                          ]) :-
+    oro_add(myself, ["horse rdf:type Animal", "toto titi"]).
+test(malformed_batch_changes_nothing, [ setup(knowledge_testsuite),
+                                        true(After-Horse == Before-false)
+                                      ]) :-
+    knowledge_count(x, ["?x rdf:type Animal"], Before),
+    catch(oro_add(myself, ["horse rdf:type Animal", "toto titi",
+                           "fish rdf:type Animal"]),
+          error(syntax_error(_), _),
+          true),
+    knowledge_count(x, ["?x rdf:type Animal"], After),
+    (   oro_check(myself, ["horse rdf:type Animal"])
+    ->  Horse = true
+    ;   Horse = false
+    ).
+test(incomplete_statement,
+     [ setup(knowledge_testsuite),
+       error(syntax_error(oro_statement_incomplete(_)))
+     ]) :-
+    oro_add(myself, ["horse rdf:type Animal", "?x rdf:type Animal"]).
+test(incomplete_batch_changes_nothing, [setup(knowledge_testsuite), fail]) :-
+    catch(oro_add(myself, ["horse rdf:type Animal", "?x rdf:type Animal"]),
+          error(syntax_error(_), _),
+          true),
+    oro_check(myself, ["horse rdf:type Animal"]).
+test(not_a_statement, [ setup(knowledge_testsuite),
+                        error(type_error(oro_statement, foo(a)))
+                      ]) :-
+    oro_add(myself, [foo(a)]).
+test(not_a_list, [ setup(knowledge_testsuite),
+                   error(type_error(list, foo))
+                 ]) :-
+    oro_add(myself, foo).
+test(unknown_model, [ setup(knowledge_testsuite),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    oro_add(nobody, ["a b c"]).
+test(default_alias, [setup(knowledge_testsuite)]) :-
+    oro_add(default, ["horse rdf:type Animal"]),
+    oro_check(myself, ["horse rdf:type Animal"]).
+test(counts_6_animals, [ setup(knowledge_testsuite),                 % §13.4.1
+                         true(Xs == [baboon, cow, fish, gorilla, horse, sparrow])
+                       ]) :-
+    oro_add(myself, ["oro:horse rdf:type oro:Animal"]),
+    oro_add(myself, ["fish rdf:type Animal", "sparrow rdf:type Bird",
+                     "Bird rdfs:subClassOf Animal"]),
+    knowledge_find(instances, ["?instances rdf:type oro:Animal"], Xs).
+
+:- end_tests(add).
+
+
+                 /*******************************
+                 *        REMOVE AND CLEAR      *
+                 *******************************/
+
+:- begin_tests(remove_clear).
+
+knowledge_birds :-
+    knowledge_testsuite,
+    oro_add(myself, ["fish rdf:type Animal", "sparrow rdf:type Bird",
+                     "Bird rdfs:subClassOf Animal"]).
+
+test(remove_asserted, [setup(knowledge_testsuite), fail]) :-
+    oro_add(myself, ["horse rdf:type Animal"]),
+    oro_remove(myself, ["horse rdf:type Animal"]),
+    oro_check(myself, ["horse rdf:type Animal"]).
+test(remove_ontology_fact, [setup(knowledge_testsuite), fail]) :-
+    oro_remove(myself, ["gorilla eats apple"]),
+    oro_check(myself, ["gorilla eats apple"]).
+test(remove_unknown_ignored, [ setup(knowledge_testsuite),
+                               true(After == Before)
+                             ]) :-
+    knowledge_about(gorilla, Before),
+    oro_remove(myself, ["gorilla eats bananas", "superman isA coward"]),
+    knowledge_about(gorilla, After).
+test(remove_inferred_is_noop, [setup(knowledge_testsuite)]) :-
+    oro_remove(myself, ["gorilla rdf:type Animal"]),
+    oro_check(myself, ["gorilla rdf:type Animal"]).
+test(clear_five_then_four, [ setup(knowledge_birds),               % §13.4.2
+                             true(Counts == [5, 4])
+                           ]) :-
+    knowledge_count(x, ["?x rdf:type Animal"], N1),
+    oro_clear(myself, ["Bird rdfs:subClassOf Animal"]),
+    knowledge_count(x, ["?x rdf:type Animal"], N2),
+    Counts = [N1, N2].
+test(domain_brings_back, [ setup(knowledge_birds),
+                           true(N == 5)
+                         ]) :-
+    oro_clear(myself, ["Bird rdfs:subClassOf Animal"]),
+    oro_add(myself, ["sparrow eats seeds", "sparrow eats butter"]),
+    knowledge_count(x, ["?x rdf:type Animal"], N).
+test(food, [ setup(knowledge_birds),
+             true(Food == [butter, seeds])
+           ]) :-
+    oro_add(myself, ["sparrow eats seeds", "sparrow eats butter"]),
+    knowledge_find(food, ["sparrow eats ?food"], Food).
+test(clear_pattern, [ setup(knowledge_birds),
+                      true(Food-N == []-4)
+                    ]) :-
+    oro_clear(myself, ["Bird rdfs:subClassOf Animal"]),
+    oro_add(myself, ["sparrow eats seeds", "sparrow eats butter"]),
+    oro_clear(myself, ["sparrow eats ?food"]),
+    knowledge_find(food, ["sparrow eats ?food"], Food),
+    knowledge_count(x, ["?x rdf:type Animal"], N).
+test(clear_everything_about, [ setup(knowledge_testsuite),
+                               true(N == 0)
+                             ]) :-
+    oro_clear(myself, ["gorilla ?p ?o"]),
+    knowledge_about(gorilla, N).
+test(clear_includes_ontology_facts, [setup(knowledge_testsuite), fail]) :-
+    oro_clear(myself, ["gorilla ?a ?b"]),
+    oro_check(myself, ["gorilla rdf:type Monkey"]).
+test(clear_leaves_others, [ setup(knowledge_testsuite),
+                            true(Xs == [baboon])
+                          ]) :-
+    oro_clear(myself, ["gorilla ?a ?b"]),
+    knowledge_find(x, ["?x rdf:type Monkey"], Xs).
+test(clear_patterns_are_or, [ setup(knowledge_testsuite),
+                              true(Xs == [])
+                            ]) :-
+    oro_clear(myself, ["gorilla eats ?x", "cow eats ?y"]),
+    knowledge_find(x, ["?x eats ?y"], Xs).
+test(clear_literal_value, [setup(knowledge_testsuite), fail]) :-
+    oro_clear(myself, ["gorilla age 12"]),
+    oro_check(myself, ["gorilla age ?a"]).
+test(clear_literal_by_value,
+     [ setup(knowledge_testsuite),
+       fail
+     ]) :-
+    oro_clear(myself, ["gorilla age 12^^xsd:integer"]),
+    oro_check(myself, ["gorilla age ?a"]).
+test(clear_back_to_initial, [ setup(knowledge_testsuite),         % §13.4.3
+                              true(After-Added == Before-2)
+                            ]) :-
+    knowledge_about(gorilla, Before),
+    Stmts = ["gorilla rdfs:label 'KingKong'",
+             "gorilla rdfs:comment \"KingKong is nice\""],
+    oro_add(myself, Stmts),
+    knowledge_about(gorilla, WithThem),
+    Added is WithThem - Before,
+    oro_clear(myself, Stmts),
+    knowledge_about(gorilla, After).
+test(clear_malformed_changes_nothing, [ setup(knowledge_testsuite),
+                                        true(After == Before)
+                                      ]) :-
+    knowledge_about(gorilla, Before),
+    catch(oro_clear(myself, ["gorilla ?a ?b", "a b"]),
+          error(syntax_error(_), _),
+          true),
+    knowledge_about(gorilla, After).
+test(clear_unknown_model, [ setup(knowledge_testsuite),
+                            error(existence_error(agent, nobody))
+                          ]) :-
+    oro_clear(nobody, ["gorilla ?a ?b"]).
+
+:- end_tests(remove_clear).
+
+
+                 /*******************************
+                 *            UPDATE            *
+                 *******************************/
+
+:- begin_tests(update).
+
+knowledge_kingkong :-
+    knowledge_testsuite,
+    oro_add(myself, ["gorilla rdfs:label 'KingKong'"]),
+    oro_update(myself, ["gorilla age 21", "gorilla weight 99.5"]).
+
+test(functional_age, [ setup(knowledge_kingkong),                   % §13.5
+                       true(As == ['21'])
+                     ]) :-
+    knowledge_find(a, ["gorilla age ?a", "gorilla weight ?w"], As).
+test(functional_weight, [ setup(knowledge_kingkong),
+                          true(Ws == ['99.5'])
+                        ]) :-
+    knowledge_find(w, ["gorilla age ?a", "gorilla weight ?w"], Ws).
+test(other_subjects_untouched, [ setup(knowledge_kingkong),
+                                 true(As == ['12'])
+                               ]) :-
+    knowledge_find(a, ["cow age ?a"], As).
+test(label_is_not_functional, [ setup(knowledge_kingkong),
+                                true(Ls == ['KingKong', 'Lord of the rings'])
+                              ]) :-
+    oro_update(myself, ["gorilla age 99",
+                        "gorilla rdfs:label \"Lord of the rings\"",
+                        "gorilla likeIcecream true"]),
+    knowledge_find(l, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                       "gorilla likeIcecream ?c"], Ls).
+test(second_update_age, [ setup(knowledge_kingkong),
+                          true(As == ['99'])
+                        ]) :-
+    oro_update(myself, ["gorilla age 99",
+                        "gorilla rdfs:label \"Lord of the rings\"",
+                        "gorilla likeIcecream true"]),
+    knowledge_find(a, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                       "gorilla likeIcecream ?c"], As).
+test(unknown_predicate_added, [ setup(knowledge_kingkong),
+                                true(Cs == [true])
+                              ]) :-
+    oro_update(myself, ["gorilla age 99",
+                        "gorilla rdfs:label \"Lord of the rings\"",
+                        "gorilla likeIcecream true"]),
+    knowledge_find(c, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                       "gorilla likeIcecream ?c"], Cs).
+test(functional_declared_at_run_time, [ setup(knowledge_testsuite),
+                                        true(Ms == [sad])
+                                      ]) :-
+    oro_add(myself, ["hasMood rdf:type owl:FunctionalProperty",
+                     "gorilla hasMood happy"]),
+    oro_update(myself, ["gorilla hasMood sad"]),
+    knowledge_find(m, ["gorilla hasMood ?m"], Ms).
+test(non_functional_adds, [ setup(knowledge_testsuite),
+                            true(Ms == [happy, sad])
+                          ]) :-
+    oro_add(myself, ["gorilla hasMood happy"]),
+    oro_update(myself, ["gorilla hasMood sad"]),
+    knowledge_find(m, ["gorilla hasMood ?m"], Ms).
+test(commonsense_functional_object, [ setup(knowledge_commonsense),
+                                      true(Cs == [blue])
+                                    ]) :-
+    oro_add(myself, ["cup1 hasColor red"]),
+    oro_update(myself, ["cup1 hasColor blue"]),
+    knowledge_find(c, ["cup1 hasColor ?c"], Cs).
+test(commonsense_functional_boolean, [ setup(knowledge_commonsense),
+                                       true(Vs == [false])
+                                     ]) :-
+    oro_add(myself, ["cup1 isVisible true"]),
+    oro_update(myself, ["cup1 isVisible false"]),
+    knowledge_find(v, ["cup1 isVisible ?v"], Vs).
+test(malformed_changes_nothing, [ setup(knowledge_testsuite),
+                                  true(As == ['12'])
+                                ]) :-
+    catch(oro_update(myself, ["gorilla age 21", "toto titi"]),
+          error(syntax_error(_), _),
+          true),
+    knowledge_find(a, ["gorilla age ?a"], As).
+test(unknown_model, [ setup(knowledge_testsuite),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    oro_update(nobody, ["gorilla age 21"]).
+
+:- end_tests(update).
+
+
+                 /*******************************
+                 *             CHECK            *
+                 *******************************/
+
+:- begin_tests(check).
+
+test(asserted, [setup(knowledge_testsuite)]) :-                    % §13.2
+    oro_check(myself, ["gorilla rdf:type Monkey"]).
+test(subclass, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, ["gorilla rdf:type Animal"]).
+test(range, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, ["apple rdf:type Plant"]).
+test(not_entailed, [setup(knowledge_testsuite), fail]) :-
+    oro_check(myself, ["gorilla rdf:type Plant"]).
+test(unknown_names, [setup(knowledge_testsuite), fail]) :-
+    oro_check(myself, ["superman isA coward"]).
+test(all_must_hold, [setup(knowledge_testsuite), fail]) :-
+    oro_check(myself, ["gorilla rdf:type Monkey", "gorilla rdf:type Plant"]).
+test(partial, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, ["?x eats grass"]).
+test(partial_no_solution, [setup(knowledge_testsuite), fail]) :-
+    oro_check(myself, ["?x eats stones"]).
+test(patterns_do_not_share, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, ["?x rdf:type Plant", "?x rdf:type Monkey"]).
+test(empty, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, []).
+test(term_pattern, [setup(knowledge_testsuite)]) :-
+    oro_check(myself, [rdf(_, eats, grass)]).
+test(malformed, [ setup(knowledge_testsuite),
+                  error(syntax_error(oro_statement_tokens(2, _)))
+                ]) :-
+    oro_check(myself, ["a b"]).
+test(unknown_model, [ setup(knowledge_testsuite),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    oro_check(nobody, ["gorilla rdf:type Monkey"]).
+
+:- end_tests(check).
+
+
+                 /*******************************
+                 *             FIND             *
+                 *******************************/
+
+:- begin_tests(find).
+
+test(monkeys, [ setup(knowledge_testsuite),                          % §13.3
+                true(Xs == [baboon, gorilla])
+              ]) :-
+    knowledge_find(x, ["?x rdf:type oro:Monkey"], Xs).
+test(question_mark_var, [ setup(knowledge_testsuite),
+                          true(Xs == [baboon, gorilla])
+                        ]) :-
+    knowledge_find('?x', ["?x rdf:type Monkey"], Xs).
+test(string_var, [ setup(knowledge_testsuite),
+                   true(Xs == [baboon, gorilla])
+                 ]) :-
+    knowledge_find("x", ["?x rdf:type Monkey"], Xs).
+test(iris_returned, [ setup(knowledge_testsuite),
+                      true(Xs == ['http://kb.openrobots.org#baboon',
+                                  'http://kb.openrobots.org#gorilla'])
+                    ]) :-
+    oro_find(myself, x, ["?x rdf:type Monkey"], Xs).
+test(no_patterns, [ setup(knowledge_testsuite),
+                    true(Xs == [])
+                  ]) :-
+    oro_find(myself, '?mysterious', [], Xs).
+test(unknown_variable, [ setup(knowledge_testsuite),
+                         true(Xs == [])
+                       ]) :-
+    oro_find(myself, y, ["?x rdf:type Monkey"], Xs).
+test(empty_variable, [ setup(knowledge_testsuite),
+                       error(domain_error(oro_variable, _))
+                     ]) :-
+    oro_find(myself, '', ["?x rdf:type Animal"], _).
+test(bare_question_mark, [ setup(knowledge_testsuite),
+                           error(domain_error(oro_variable, _))
+                         ]) :-
+    oro_find(myself, "?", ["?x rdf:type Animal"], _).
+test(unknown_model, [ setup(knowledge_testsuite),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    oro_find(nobody, x, ["?x rdf:type Animal"], _).
+test(conjunction, [ setup(knowledge_testsuite),
+                    true(Xs == [baboon])
+                  ]) :-
+    knowledge_find(x, ["?x rdf:type Monkey", "?x isFemale true"], Xs).
+test(shared_variables, [ setup(knowledge_testsuite),
+                         true(Xs == [])
+                       ]) :-
+    knowledge_find(x, ["?x rdf:type Plant", "?x rdf:type Monkey"], Xs).
+test(labels, [ setup(knowledge_testsuite),
+               true(Ls == ['baboon monkey', babouin])
+             ]) :-
+    knowledge_find(label, ["?mysterious rdf:type oro:Monkey",
+                           "?mysterious oro:weight ?value",
+                           "baboon rdfs:label ?label"], Ls).
+test(no_match, [ setup(knowledge_testsuite),
+                 true(Xs == [])
+               ]) :-
+    knowledge_find(mysterious, ["?mysterious oro:eats oro:banana_tree",
+                                "?mysterious oro:isFemale true^^xsd:boolean"],
+                   Xs).
+test(typed_boolean, [ setup(knowledge_testsuite),
+                      true(Xs == [baboon, fish])
+                    ]) :-
+    oro_add(myself, ["oro:fish oro:isFemale \"true\"^^xsd:boolean"]),
+    knowledge_find(i, ["?i rdf:type owl:Thing", "?i oro:isFemale true"], Xs).
+test(domain_inference, [ setup(knowledge_testsuite),
+                         true(Xs == [baboon, cow, gorilla, sheep])
+                       ]) :-
+    oro_add(myself, ["sheep eats grass"]),
+    knowledge_find(animals, ["?animals rdf:type Animal"], Xs).
+test(term_patterns, [ setup(knowledge_testsuite),
+                      true(Xs == ['http://kb.openrobots.org#baboon',
+                                  'http://kb.openrobots.org#gorilla'])
+                    ]) :-
+    oro_find(myself, X, [rdf(X, rdf:type, oro:'Monkey')], Xs).
+test(term_template, [ setup(knowledge_testsuite),
+                      true(Pairs == [baboon-'35', gorilla-'12'])
+                    ]) :-
+    oro_find(myself, X-A, [rdf(X, rdf:type, 'Monkey'), rdf(X, age, A)],
+             Values),
+    findall(N-T, ( member(X1-A1, Values),
+                   oro_iri_name(X1, N),
+                   oro_term_text(A1, T)
+                 ), Pairs).
+
+:- end_tests(find).
+
+
+                 /*******************************
+                 *             RESET            *
+                 *******************************/
+
+:- begin_tests(reset).
+
+test(forgets_added, [setup(knowledge_testsuite), fail]) :-
+    oro_add(myself, ["horse rdf:type Animal"]),
+    oro_reset,
+    oro_check(myself, ["horse rdf:type Animal"]).
+test(keeps_ontology, [setup(knowledge_testsuite)]) :-
+    oro_reset,
+    oro_check(myself, ["gorilla rdf:type Monkey"]).
+test(restores_removed_ontology_facts, [setup(knowledge_testsuite)]) :-
+    oro_clear(myself, ["gorilla ?a ?b"]),
+    oro_reset,
+    oro_check(myself, ["gorilla rdf:type Monkey", "gorilla age 12"]).
+test(forgets_schema, [setup(knowledge_testsuite), fail]) :-
+    oro_add(myself, ["Insect rdfs:subClassOf Animal",
+                     "ladybug rdf:type Insect"]),
+    oro_reset,
+    oro_add(myself, ["ladybug rdf:type Insect"]),
+    oro_check(myself, ["ladybug rdf:type Animal"]).
+test(robot_model_back, [setup(knowledge_commonsense)]) :-
+    oro_reset,
+    oro_check(default, ["myself rdf:type Robot"]).
+
+:- end_tests(reset).
+
+
+                 /*******************************
+                 *           ROBOT ID           *
+                 *******************************/
+
+:- begin_tests(robot_id).
+
+knowledge_robot :-
+    oro_init([robot_id('ROBOT')]).
+
+test(same_as, [setup(knowledge_robot)]) :-
+    oro_check(myself, ["myself owl:sameAs ROBOT"]).
+test(same_as_back, [setup(knowledge_robot)]) :-
+    oro_check(myself, ["ROBOT owl:sameAs myself"]).
+test(robot_type, [setup(knowledge_robot)]) :-
+    oro_check(myself, ["ROBOT rdf:type Robot", "ROBOT rdf:type Agent"]).
+test(model_alias, [setup(knowledge_robot)]) :-
+    oro_add('ROBOT', ["ROBOT sees cup1"]),
+    oro_check(myself, ["myself sees cup1"]).
+test(robot_id, [ setup(knowledge_robot),
+                 true(Id == 'ROBOT')
+               ]) :-
+    oro_robot_id(Id).
+test(no_robot_id, [ setup(knowledge_commonsense),
+                    true(Id == '')
+                  ]) :-
+    oro_robot_id(Id).
+test(no_alias_without_id, [ setup(knowledge_commonsense),
+                            error(existence_error(agent, 'ROBOT'))
+                          ]) :-
+    oro_check('ROBOT', ["myself rdf:type Robot"]).
+test(robot_is_myself, [setup(knowledge_commonsense)]) :-
+    oro_check(myself, ["myself rdf:type Robot", "myself rdf:type Agent"]).
+
+:- end_tests(robot_id).
+
+
+                 /*******************************
+                 *         SEED SESSION         *
+                 *******************************/
+
+:- begin_tests(seed_session).                                       % §13.13
+
+knowledge_seed :-
+    knowledge_commonsense,
+    oro_add(myself, ["kitchen_table rdf:type Table", "fork1 rdf:type Fork",
+                     "glass1 rdf:type Glass"]),
+    oro_add(myself, ["fork1 isOn kitchen_table"]).
+
+test(is_at_table, [ setup(knowledge_seed),
+                    true(Os == [fork1])
+                  ]) :-
+    knowledge_find(o, ["?o isAt kitchen_table"], Os).
+test(no_artifact_yet, [ setup(knowledge_seed),
+                        true(Os == [])
+                      ]) :-
+    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+test(fork_tableware, [ setup(knowledge_seed),
+                       true(Os == [fork1])
+                     ]) :-
+    oro_add(myself, ["Fork rdfs:subClassOf Tableware",
+                     "Glass rdfs:subClassOf Tableware"]),
+    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+test(fork_artifact, [setup(knowledge_seed)]) :-
+    oro_add(myself, ["Fork rdfs:subClassOf Tableware"]),
+    oro_check(myself, ["fork1 rdf:type Artifact"]).
+test(glass_on_table, [ setup(knowledge_seed),
+                       true(Os == [fork1, glass1])
+                     ]) :-
+    oro_add(myself, ["Fork rdfs:subClassOf Tableware",
+                     "Glass rdfs:subClassOf Tableware"]),
+    oro_add(myself, ["glass1 isOn kitchen_table"]),
+    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+
+:- end_tests(seed_session).
+
+
+                 /*******************************
+                 *             SAVE             *
+                 *******************************/
+
+:- begin_tests(save).
+
+knowledge_save_init(Dir) :-
+    knowledge_tmp_dir(Dir),
+    knowledge_fixture('testsuite.ttl', File),
+    oro_init([commonsense(false), ontologies([File]), save_dir(Dir)]).
+
+knowledge_reload(Dir, Name) :-
+    directory_file_path(Dir, Name, Saved),
+    oro_init([commonsense(false), ontologies([Saved])]).
+
+test(file_written, [ setup(knowledge_save_init(Dir)),
+                     cleanup(delete_directory_and_contents(Dir))
+                   ]) :-
+    oro_save(myself, 'out.owl'),
+    directory_file_path(Dir, 'out.owl', Saved),
+    exists_file(Saved).
+test(loads_back, [ setup(knowledge_save_init(Dir)),
+                   cleanup(delete_directory_and_contents(Dir))
+                 ]) :-
+    oro_add(myself, ["fish rdf:type Animal", "fish age 3",
+                     "fish rdfs:label \"Wanda\""]),
+    oro_save(myself, 'out.owl'),
+    knowledge_reload(Dir, 'out.owl'),
+    oro_check(myself, ["fish rdf:type Animal", "fish age 3",
+                       "gorilla rdf:type Monkey", "gorilla age 12"]).
+test(reloaded_label, [ setup(knowledge_save_init(Dir)),
+                       cleanup(delete_directory_and_contents(Dir)),
+                       true(Ls == ['Wanda'])
+                     ]) :-
+    oro_add(myself, ["fish rdfs:label \"Wanda\""]),
+    oro_save(myself, 'out.owl'),
+    knowledge_reload(Dir, 'out.owl'),
+    knowledge_find(l, ["fish rdfs:label ?l"], Ls).
+test(reloaded_inference, [ setup(knowledge_save_init(Dir)),
+                           cleanup(delete_directory_and_contents(Dir))
+                         ]) :-
+    oro_add(myself, ["Insect rdfs:subClassOf Animal",
+                     "ladybug rdf:type Insect"]),
+    oro_save(myself, 'out.owl'),
+    knowledge_reload(Dir, 'out.owl'),
+    oro_check(myself, ["ladybug rdf:type Animal"]).
+test(removed_stays_removed, [ setup(knowledge_save_init(Dir)),
+                              cleanup(delete_directory_and_contents(Dir)),
+                              fail
+                            ]) :-
+    oro_clear(myself, ["gorilla eats apple"]),
+    oro_save(myself, 'out.owl'),
+    knowledge_reload(Dir, 'out.owl'),
+    oro_check(myself, ["gorilla eats apple"]).
+test(sub_directory, [ setup(knowledge_save_init(Dir)),
+                      cleanup(delete_directory_and_contents(Dir))
+                    ]) :-
+    directory_file_path(Dir, sub, Sub),
+    make_directory(Sub),
+    oro_save(myself, 'sub/out.owl'),
+    knowledge_reload(Sub, 'out.owl'),
+    oro_check(myself, ["gorilla rdf:type Monkey"]).
+test(parent_directory, [ setup(knowledge_save_init(Dir)),
+                         cleanup(delete_directory_and_contents(Dir)),
+                         error(permission_error(write, oro_file, '../x.owl'))
+                       ]) :-
+    oro_save(myself, '../x.owl').
+test(parent_inside_path, [ setup(knowledge_save_init(Dir)),
+                           cleanup(delete_directory_and_contents(Dir)),
+                           error(permission_error(write, oro_file, _))
+                         ]) :-
+    oro_save(myself, 'sub/../../x.owl').
+test(absolute_path, [ setup(knowledge_save_init(Dir)),
+                      cleanup(delete_directory_and_contents(Dir)),
+                      error(permission_error(write, oro_file, _))
+                    ]) :-
+    directory_file_path(Dir, 'x.owl', Absolute),
+    oro_save(myself, Absolute).
+test(nothing_written_on_error, [ setup(knowledge_save_init(Dir)),
+                                 cleanup(delete_directory_and_contents(Dir)),
+                                 true(Files == [])
+                               ]) :-
+    catch(oro_save(myself, '../x.owl'), error(permission_error(_, _, _), _),
+          true),
+    directory_files(Dir, Entries),
+    subtract(Entries, ['.', '..'], Files).
+test(unknown_model, [ setup(knowledge_save_init(Dir)),
+                      cleanup(delete_directory_and_contents(Dir)),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    oro_save(nobody, 'out.owl').
+
+:- end_tests(save).

@@ -1,0 +1,135 @@
+:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
+:- use_module(library(plunit)).
+:- use_module(library(oro)).
+
+/*  Tests for names (ORO-SPEC §4.1): expansion of the names clients
+    write into IRIs (oro_name_iri/2), contraction of IRIs into the ids
+    clients read (oro_iri_name/2), and the text of literals in results
+    (oro_term_text/2, §4.2 "Output of literals").
+
+    These are pure functions: no store is needed.
+
+    Run: cd /work/main && swipl -g run_tests -t halt test/test_names.pl
+*/
+
+:- use_module(library(semweb/rdf_db)).
+
+%   names_literal(+Type, +Lex, -Literal): the rdf_db typed literal,
+%   Type written with a prefix (xsd:int).
+
+names_literal(Type, Lex, literal(type(IRI, Lex))) :-
+    rdf_global_id(Type, IRI).
+
+
+                 /*******************************
+                 *           EXPANSION          *
+                 *******************************/
+
+:- begin_tests(name_expansion).
+
+test(default_namespace, true(IRI == 'http://kb.openrobots.org#Monkey')) :-
+    oro_name_iri('Monkey', IRI).
+test(default_namespace_string, true(IRI == 'http://kb.openrobots.org#baboon')) :-
+    oro_name_iri("baboon", IRI).
+test(oro_prefix, true(IRI == 'http://kb.openrobots.org#Monkey')) :-
+    oro_name_iri('oro:Monkey', IRI).
+test(rdf_prefix, true(IRI == 'http://www.w3.org/1999/02/22-rdf-syntax-ns#type')) :-
+    oro_name_iri("rdf:type", IRI).
+test(rdfs_prefix, true(IRI == 'http://www.w3.org/2000/01/rdf-schema#subClassOf')) :-
+    oro_name_iri("rdfs:subClassOf", IRI).
+test(owl_prefix, true(IRI == 'http://www.w3.org/2002/07/owl#Thing')) :-
+    oro_name_iri('owl:Thing', IRI).
+test(xsd_prefix, true(IRI == 'http://www.w3.org/2001/XMLSchema#int')) :-
+    oro_name_iri('xsd:int', IRI).
+test(cyc_prefix, true(IRI == 'http://sw.opencyc.org/concept/Drink')) :-
+    oro_name_iri('cyc:Drink', IRI).
+test(full_iri_as_is, true(IRI == 'http://x.org/a#b')) :-
+    oro_name_iri('http://x.org/a#b', IRI).
+test(full_iri_without_hash, true(IRI == 'http://x.org/a/b')) :-
+    oro_name_iri("http://x.org/a/b", IRI).
+test(angle_brackets_stripped, true(IRI == 'http://x.org/a#b')) :-
+    oro_name_iri('<http://x.org/a#b>', IRI).
+test(angle_brackets_default_namespace,
+     true(IRI == 'http://kb.openrobots.org#baboon')) :-
+    oro_name_iri("<http://kb.openrobots.org#baboon>", IRI).
+test(unknown_prefix_stays, true(IRI == 'foo:bar')) :-
+    oro_name_iri('foo:bar', IRI).
+test(hash_without_prefix_stays, true(IRI == 'a#b')) :-
+    oro_name_iri('a#b', IRI).
+test(prefix_split_at_first_colon, true(IRI == 'http://kb.openrobots.org#a:b')) :-
+    oro_name_iri('oro:a:b', IRI).
+test(not_text, error(type_error(text, 42))) :-
+    oro_name_iri(42, _).
+test(unbound, error(instantiation_error)) :-
+    oro_name_iri(_, _).
+
+:- end_tests(name_expansion).
+
+
+                 /*******************************
+                 *          CONTRACTION         *
+                 *******************************/
+
+:- begin_tests(name_contraction).
+
+test(default_namespace_dropped, true(Name == baboon)) :-
+    oro_iri_name('http://kb.openrobots.org#baboon', Name).
+test(owl_prefixed, true(Name == 'owl:Thing')) :-
+    oro_iri_name('http://www.w3.org/2002/07/owl#Thing', Name).
+test(rdf_prefixed, true(Name == 'rdf:type')) :-
+    oro_iri_name('http://www.w3.org/1999/02/22-rdf-syntax-ns#type', Name).
+test(rdfs_prefixed, true(Name == 'rdfs:label')) :-
+    oro_iri_name('http://www.w3.org/2000/01/rdf-schema#label', Name).
+test(xsd_prefixed, true(Name == 'xsd:int')) :-
+    oro_iri_name('http://www.w3.org/2001/XMLSchema#int', Name).
+test(cyc_prefixed, true(Name == 'cyc:Drink')) :-
+    oro_iri_name('http://sw.opencyc.org/concept/Drink', Name).
+test(unknown_namespace_full, true(Name == 'http://x.org/a#b')) :-
+    oro_iri_name('http://x.org/a#b', Name).
+test(namespace_itself_full, true(Name == 'http://kb.openrobots.org#')) :-
+    oro_iri_name('http://kb.openrobots.org#', Name).
+test(blank_node, true(Name == anonymousNode_b1)) :-
+    oro_iri_name('_:b1', Name).
+test(round_trip, all(Name == [baboon, 'owl:Thing', 'rdf:type', 'cyc:Drink',
+                              'http://x.org/a#b'])) :-
+    member(Name0, [baboon, 'owl:Thing', 'rdf:type', 'cyc:Drink',
+                   'http://x.org/a#b']),
+    oro_name_iri(Name0, IRI),
+    oro_iri_name(IRI, Name).
+test(resource_term_text, true(Text == 'owl:Thing')) :-
+    oro_term_text('http://www.w3.org/2002/07/owl#Thing', Text).
+test(resource_term_text_default, true(Text == 'Monkey')) :-
+    oro_term_text('http://kb.openrobots.org#Monkey', Text).
+
+:- end_tests(name_contraction).
+
+
+                 /*******************************
+                 *           LITERALS           *
+                 *******************************/
+
+:- begin_tests(literal_text).
+
+test(int, true(Text == '12')) :-
+    names_literal(xsd:int, '12', L),
+    oro_term_text(L, Text).
+test(double, true(Text == '48.5')) :-
+    names_literal(xsd:double, '48.5', L),
+    oro_term_text(L, Text).
+test(boolean, true(Text == true)) :-
+    names_literal(xsd:boolean, true, L),
+    oro_term_text(L, Text).
+test(xsd_string, true(Text == 'Lord of the rings')) :-
+    names_literal(xsd:string, 'Lord of the rings', L),
+    oro_term_text(L, Text).
+test(other_datatype_bare, true(Text == '2014-03-01T10:00:00')) :-
+    names_literal(xsd:dateTime, '2014-03-01T10:00:00', L),
+    oro_term_text(L, Text).
+test(language_tag_dropped, true(Text == 'baboon monkey')) :-
+    oro_term_text(literal(lang(en, 'baboon monkey')), Text).
+test(plain, true(Text == babouin)) :-
+    oro_term_text(literal(babouin), Text).
+test(quotes_kept_inside, true(Text == 'say "hi"')) :-
+    oro_term_text(literal(lang(en, 'say "hi"')), Text).
+
+:- end_tests(literal_text).
