@@ -66,8 +66,12 @@ oro_prefix(dbp,  'https://dbpedia.org/property/').
 
 oro_name_iri(Text, IRI) :-
     must_be(text, Text),
-    atom_string(Atom, Text),
-    expand_name(Atom, IRI).
+    (   split_string(Text, ":#<", "", [_])      % a plain name
+    ->  oro_default_namespace(NS),
+        atom_concat(NS, Text, IRI)
+    ;   atom_string(Atom, Text),
+        expand_name(Atom, IRI)
+    ).
 
 expand_name(Atom, IRI) :-
     sub_atom(Atom, 0, 1, _, <),

@@ -461,9 +461,25 @@ variable_token(Token, Stmt, var(Name)) :-
 object_token(Token, Stmt, Term) :-
     (   variable_token(Token, Stmt, Var)
     ->  Term = Var
+    ;   plain_name(Token)
+    ->  oro_name_iri(Token, Term)
     ;   string_codes(Token, Codes),
         object_codes(Codes, Token, Term)
     ).
+
+%   plain_name(+Token): Token can only be a name (the common case, on
+%   the hot path of every add): it starts with a letter, is not a
+%   boolean and has no `^^` nor `@`.
+
+plain_name(Token) :-
+    string_code(1, Token, C),
+    code_type(C, alpha),
+    \+ code_type(C, digit),
+    C \== 0'_,
+    Token \== "true",
+    Token \== "false",
+    \+ sub_string(Token, _, _, _, "^^"),
+    \+ sub_string(Token, _, _, _, "@").
 
 %   object_codes(+Codes, +Token, -Term): ORO's parseLiteral, in order:
 %   typed literal, boolean, quoted string, language-tagged string,

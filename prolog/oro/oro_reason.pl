@@ -48,7 +48,19 @@ derived and stored), and inferences are visible to the very next
 request, schema added at run time included.  Lookups stay a few
 index probes because the schema closures are small and indexed.
 Forward chaining with truth maintenance was the alternative; it costs
-several times more per assert and makes removal expensive.
+several times more per assert (about 7x in a trial, STYLE.md) and makes
+removal expensive.
+
+Measured (SWI-Prolog 9.0.4, AMD EPYC, 50k asserted triples over the
+common-sense ontology; IRIs given, no parsing): a bare rdf/3 probe
+1.0 us, an asserted triple visible in the model 1.5 us, `x isOn y`
+4.4 us, `x isAt y` through isOn 8.7 us, an asserted type 7.4 us, an
+inferred type (Cup under Tableware under Artifact) 8.4 us, a false
+type 8.7 us; one rdf_assert 17.7 us against 22.5 us for a one-triple
+oro change (transaction and visibility check included).  Compiling
+the schema takes 6.6 ms with the common-sense ontology (30 ms with the
+OpenRobots ontology loaded too), and happens only on the first question
+after a schema change.
 */
 
 :- rdf_meta

@@ -1,0 +1,114 @@
+:- module(oro_errors,
+          [ oro_error_response/3        % +Error, -ExceptionName, -Message
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module('../prolog/oro/oro_names').
+
+/** <module> ORO exception names and messages
+
+The one table mapping the errors oro's library raises (ISO-shaped
+error(Formal, Context) terms) to the exception class names and
+messages ORO clients expect (ORO-SPEC §1.3, §6).  liboro looks for
+`com.hp.hpl.jena.shared.NotFoundException` and
+`com.hp.hpl.jena.query.QueryParseException` by substring: keep them.
+*/
+
+%!  oro_error_response(+Error, -ExceptionName, -Message) is det.
+%
+%   ExceptionName and Message (strings, one line) for the exception
+%   term Error.  Unknown errors become an OntologyServerException with
+%   the text print_message/2 would show.
+
+oro_error_response(error(Formal, _), Name, Message) :-
+    error_table(Formal, Name0, Format, Args),
+    !,
+    exception_name(Name0, Name),
+    format(string(Message0), Format, Args),
+    one_line(Message0, Message).
+oro_error_response(Error, Name, Message) :-
+    exception_name(server, Name),
+    error_text(Error, Message0),
+    one_line(Message0, Message).
+
+error_text(Error, Text) :-
+    catch(( '$messages':translate_message(Error, Lines, []),
+            with_output_to(string(Text),
+                           print_message_lines(current_output, '', Lines))
+          ),
+          _,
+          format(string(Text), '~q', [Error])).
+
+one_line(Text, Line) :-
+    split_string(Text, "\n\r", "", Parts0),
+    exclude(==(""), Parts0, Parts),
+    atomic_list_concat(Parts, ' ', Atom),
+    atom_string(Atom, Line).
+
+exception_name(not_implemented, "NotImplementedException") :- !.
+exception_name(not_found, "com.hp.hpl.jena.shared.NotFoundException") :- !.
+exception_name(Short, Name) :-
+    oro_exception(Short, Class),
+    atom_concat('laas.openrobots.ontology.exceptions.', Class, Name0),
+    atom_string(Name0, Name).
+
+oro_exception(illegal_statement, 'IllegalStatementException').
+oro_exception(server, 'OntologyServerException').
+oro_exception(agent_not_found, 'AgentNotFoundException').
+oro_exception(invalid_query, 'InvalidQueryException').
+
+%   error_table(+Formal, -Exception, -Format, -Args)
+
+error_table(oro_method(unknown, Name), not_implemented,
+            'Method "~w" not implemented.', [Name]).
+error_table(oro_method(arity(N), Name), not_implemented,
+            'Error while executing the request: wrong number of parameters \c
+             provided for method "~w" (~d were provided).', [Name, N]).
+error_table(oro_method(prototype, Name), not_implemented,
+            'Error while executing the request: no method prototype for \c
+             \'~w\' match the given arguments.', [Name]).
+error_table(oro_method(failed), server,
+            'The method failed unexpectedly.', []).
+error_table(syntax_error(oro_statement_tokens(N, Text)), illegal_statement,
+            'Three tokens are expected in a statement, ~d found in ~w.',
+            [N, Text]).
+error_table(syntax_error(oro_statement_empty_token(Text)), illegal_statement,
+            'Empty token in the statement ~w (two spaces in a row?).', [Text]).
+error_table(syntax_error(oro_statement_variable(Text)), illegal_statement,
+            'A variable needs a name (?name) in ~w.', [Text]).
+error_table(syntax_error(oro_statement_incomplete(Text)), illegal_statement,
+            'A complete statement is expected here, not a pattern: ~w.',
+            [Text]).
+error_table(syntax_error(oro_invalid_datatype(Type)), illegal_statement,
+            'Invalid XML datatype! ~w is not a known datatype.', [Type]).
+error_table(syntax_error(oro_lexical_form(Lex, Type)), illegal_statement,
+            'Lexical form doesn\'t match datatype! "~w" is not a valid ~w.',
+            [Lex, Type]).
+error_table(syntax_error(oro_unicode_escape(Text)), server,
+            'Unable to parse unicode value: ~w', [Text]).
+error_table(type_error(oro_statement, Term), illegal_statement,
+            'Not a statement: ~q.', [Term]).
+error_table(existence_error(agent, Agent), agent_not_found,
+            'I couldn\'t find the agent ~w.', [Agent]).
+error_table(existence_error(resource, IRI), not_found,
+            'The node ~w was not found in the ontology \c
+             (tip: check the namespaces!).', [IRI]).
+error_table(existence_error(class, IRI), not_found,
+            'The class ~w does not exists in the ontology (tip: if this \c
+             resource is not in the default namespace, be sure to add the \c
+             namespace prefix!)', [Name]) :-
+    oro_iri_name(IRI, Name).
+error_table(existence_error(individual, IRI), not_found,
+            '~w is not an individual!', [Name]) :-
+    oro_iri_name(IRI, Name).
+error_table(domain_error(oro_variable, _), server,
+            'Calling the find() method with an empty variable.', []).
+error_table(domain_error(oro_resource_type, Type), server,
+            'Unknown resource type ~w: one of instance, class, \c
+             object_property or datatype_property was expected.', [Type]).
+error_table(permission_error(write, oro_file, File), server,
+            'Error while opening ~w to output the ontology: files are only \c
+             written under the save directory.', [File]).
+error_table(existence_error(source_sink, File), server,
+            'Error while opening ~w.', [File]).
+error_table(resource_error(Resource), server,
+            'Out of resources (~w) while executing the request.', [Resource]).

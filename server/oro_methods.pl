@@ -1,0 +1,491 @@
+:- module(oro_methods,
+          [ oro_dispatch/4,             % +Context, +Method, +Params, -Reply
+            oro_method_signature/2,     % ?Name, ?Signature
+            oro_simple_signature/2      % +Signature, -Text
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(pairs)).
+:- use_module(library(error)).
+:- use_module(library(debug)).
+:- use_module('../prolog/oro').
+:- use_module('../prolog/oro/oro_parse').
+:- use_module('../prolog/oro/oro_names').
+:- use_module('../prolog/oro/oro_store').
+:- use_module(oro_errors).
+
+/** <module> The ORO method table and dispatcher
+
+Every RPC method of the server is declared by one clause of the
+multifile hook oro_methods:method/4 -- built-in methods and plugins
+alike:
+
+    method(Signature, Category, Help, Implementation)
+
+  - Signature is Name(Type, ...) with each Type `string`, `set` or
+    `list`, as ORO spells them in listSimpleMethods
+    (`add(Set)`, `find(String, Set)`);
+  - Category groups methods in `help`;
+  - Help is a one-line description (a string);
+  - Implementation is a callable, called as
+    call(Implementation, Arg1, ..., ArgN, Reply) with the decoded
+    parameters (strings for `String`, lists of strings for `Set` and
+    `List`); Reply is a value term of oro_protocol (`void`,
+    `bool(B)`, `string(S)`, `list(L)`, `map(Pairs)`, `raw(Text)`).
+    An Implementation context(Goal) is called as
+    call(Goal, Context, Arg1, ..., ArgN, Reply), Context being the
+    dict describing the connection.
+
+The dispatcher finds the method by name (case-insensitively) and
+arity, decodes the parameters, calls it, and turns any error into an
+ORO error reply through oro_errors.  Only what is declared here is
+listed by listMethods, listSimpleMethods and help.
+*/
+
+:- multifile method/4.
+:- discontiguous method/4.
+
+%!  method(?Signature, ?Category, ?Help, ?Implementation) is nondet.
+%
+%   The method table; see the module documentation.
+
+		 /*******************************
+		 *          DISPATCH            *
+		 *******************************/
+
+%!  oro_dispatch(+Context, +Method, +Params, -Reply) is det.
+%
+%   Execute the request Method(Params) (Method a string as received,
+%   Params a list of strings).  Reply is ok(Value) or
+%   error(ExceptionName, Message).
+
+oro_dispatch(Context, Method, Params, Reply) :-
+    catch(dispatch(Context, Method, Params, Value), Error, true),
+    (   var(Error)
+    ->  Reply = ok(Value)
+    ;   oro_error_response(Error, Name, Message),
+        debug(oro(server), 'Error: ~q', [Error]),
+        Reply = error(Name, Message)
+    ).
+
+dispatch(Context, Method, Params, Value) :-
+    string_lower(Method, Lower),
+    atom_string(Name, Lower),
+    findall(Sig-Impl, named_method(Name, Sig, Impl), Candidates),
+    length(Params, Arity),
+    (   Candidates == []
+    ->  throw(error(oro_method(unknown, Method), _))
+    ;   include(has_arity(Arity), Candidates, [Sig-Impl|_])
+    ->  Sig =.. [_|Types],
+        decode_params(Types, Params, Method, Args),
+        call_method(Impl, Context, Args, Value)
+    ;   throw(error(oro_method(arity(Arity), Method), _))
+    ).
+
+named_method(Lower, Sig, Impl) :-
+    method(Sig, _, _, Impl),
+    functor(Sig, Name, _),
+    downcase_atom(Name, Lower).
+
+has_arity(Arity, Sig-_) :-
+    functor(Sig, _, Arity).
+
+decode_params(Types, Params, Method, Args) :-
+    catch(maplist(decode_param, Types, Params, Args),
+          error(type_error(Type, _), _),
+          (   collection_type(Type)
+          ->  throw(error(oro_method(prototype, Method), _))
+          ;   fail
+          )).
+
+collection_type(oro_collection).
+collection_type(oro_map).
+
+decode_param(string, Text, Value) :-
+    oro_clean_value(Text, Value).
+decode_param(set, Text, Value) :-
+    oro_parse_collection(set, Text, Value).
+decode_param(list, Text, Value) :-
+    oro_parse_collection(list, Text, Value).
+
+call_method(context(Goal), Context, Args, Value) :-
+    !,
+    Call =.. [call, Goal, Context|Args],
+    append_reply(Call, Value).
+call_method(Goal, _, Args, Value) :-
+    Call =.. [call, Goal|Args],
+    append_reply(Call, Value).
+
+append_reply(Call0, Value) :-
+    Call0 =.. List0,
+    append(List0, [Value], List),
+    Call =.. List,
+    (   call(Call)
+    ->  true
+    ;   throw(error(oro_method(failed), _))
+    ).
+
+%!  oro_method_signature(?Name, ?Signature) is nondet.
+%
+%   Signature is a declared method called Name.
+
+oro_method_signature(Name, Signature) :-
+    method(Signature, _, _, _),
+    functor(Signature, Name, _).
+
+%!  oro_simple_signature(+Signature, -Text) is det.
+%
+%   Text is the signature as listSimpleMethods spells it:
+%   `find(String, Set)`.
+
+oro_simple_signature(Signature, Text) :-
+    Signature =.. [Name|Types],
+    maplist(type_name, Types, Names),
+    atomic_list_concat(Names, ', ', Args),
+    format(string(Text), '~w(~w)', [Name, Args]).
+
+type_name(string, 'String').
+type_name(set, 'Set').
+type_name(list, 'List').
+
+		 /*******************************
+		 *        ADMINISTRATION        *
+		 *******************************/
+
+method(help, base,
+       "Lists the methods of the server with a short description.",
+       m_help).
+method(hello, administration,
+       "Returns the name and version of the server.",
+       m_hello).
+method(stats, administration,
+       "Returns statistics about the server: version, host, uptime...",
+       context(m_stats)).
+method(listMethods, administration,
+       "Returns the methods of the server with their descriptions.",
+       m_list_methods).
+method(listSimpleMethods, administration,
+       "Returns the signatures of the methods of the server.",
+       m_list_simple_methods).
+method(methods, administration,
+       "Returns the signatures of the methods of the server (alias of listSimpleMethods).",
+       m_list_simple_methods).
+method(makeHtmlDoc, administration,
+       "Returns an HTML page documenting the methods of the server.",
+       m_html_doc).
+method(reset, administration,
+       "Forgets everything added since the server started: facts, agents, events.",
+       m_reset).
+method(clear, administration,
+       "Without parameter: resets the server (same as reset).",
+       m_reset).
+method(save, administration,
+       "Saves the robot's model as RDF/XML in a timestamped file of the save directory.",
+       m_save).
+method(save(string), administration,
+       "Saves the robot's model as RDF/XML to the given file, under the save directory.",
+       m_save).
+method(list(string), administration,
+       "Prints the asserted statements matching a pattern in the server's log.",
+       m_list).
+
+m_help(multiline_string(Text)) :-
+    findall(Cat-(Sig-Help), method(Sig, Cat, Help, _), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    with_output_to(string(Text),
+                   ( format("\e[1moro\e[0m: the ORO knowledge server, \c
+                             in SWI-Prolog (ORO protocol 0.8.2)~n~n"),
+                     forall(member(Cat-Methods, Groups),
+                            ( format("\e[1m~w\e[0m~n", [Cat]),
+                              forall(member(Sig-Help, Methods),
+                                     ( oro_simple_signature(Sig, S),
+                                       format("\t- ~w: ~w~n", [S, Help])
+                                     ))
+                            )),
+                     format("~nSend the method name, one parameter per \c
+                             line, then #end#.")
+                   )).
+
+m_hello(string("oro-server 0.8.2")).
+
+m_stats(Context, map(Pairs)) :-
+    get_time(Now),
+    Uptime is max(0, integer(Now - Context.started)),
+    H is Uptime // 3600,
+    M is (Uptime mod 3600) // 60,
+    S is Uptime mod 60,
+    format(string(UptimeText), "~|~`0t~d~2+:~|~`0t~d~2+:~|~`0t~d~2+", [H, M, S]),
+    gethostname(Host),
+    Pairs = [ "version"-string("0.8.2"),
+              "host"-string(Host),
+              "uptime"-string(UptimeText),
+              "nb_classes"-string("not available"),
+              "nb_instances"-string("not available"),
+              "nb_clients"-string("not available"),
+              "pending_requests"-string("0")
+            ].
+
+m_list_methods(map(Pairs)) :-
+    findall(Text-string(Help),
+            ( method(Sig, _, Help, _),
+              oro_simple_signature(Sig, Text)
+            ),
+            Pairs).
+
+m_list_simple_methods(list(Signatures)) :-
+    findall(string(Text),
+            ( method(Sig, _, _, _),
+              oro_simple_signature(Sig, Text)
+            ),
+            Signatures).
+
+m_html_doc(string(HTML)) :-
+    findall(Sig-Help, method(Sig, _, Help, _), Methods),
+    with_output_to(string(HTML),
+                   ( format("<h2>List of available methods</h2><ul>"),
+                     forall(member(Sig-Help, Methods),
+                            ( oro_simple_signature(Sig, S),
+                              format("<li><b>~w</b>: ~w</li>", [S, Help])
+                            )),
+                     format("</ul>")
+                   )).
+
+m_reset(void) :-
+    oro_reset.
+
+m_save(void) :-
+    get_time(Now),
+    format_time(atom(File), '%Y%m%d-%H%M%S-snapshot.owl', Now),
+    oro_save(myself, File).
+
+m_save(Path, void) :-
+    atom_string(File, Path),
+    oro_save(myself, File).
+
+m_list(Pattern, void) :-
+    oro_statements([Pattern], [rdf(S, P, O)], _),
+    forall(oro_asserted(myself, S, P, O),
+           ( statement_text(rdf(S, P, O), Text),
+             print_message(informational, format('~w', [Text]))
+           )).
+
+		 /*******************************
+		 *        KNOWLEDGE BASE        *
+		 *******************************/
+
+method(add(set), base,
+       "Adds statements to the robot's model (long-term memory).",
+       m_add).
+method(remove(set), base,
+       "Removes statements (or statements matching patterns) from the robot's model.",
+       m_remove).
+method(retract(set), base,
+       "Removes statements (alias of remove).",
+       m_remove).
+method(clear(set), base,
+       "Removes every asserted statement matching one of the patterns.",
+       m_clear).
+method(update(set), base,
+       "Adds statements, replacing the previous value of functional properties.",
+       m_update).
+method(check(set), base,
+       "Tells whether every statement or pattern holds (asserted or inferred).",
+       m_check).
+method(find(string, set), querying,
+       "Returns the values of a variable that satisfy all the patterns.",
+       m_find).
+
+m_add(Statements, void) :-
+    oro_add(myself, Statements).
+
+m_remove(Statements, void) :-
+    oro_remove(myself, Statements).
+
+m_clear(Patterns, void) :-
+    oro_clear(myself, Patterns).
+
+m_update(Statements, void) :-
+    oro_update(myself, Statements).
+
+m_check(Patterns, bool(Bool)) :-
+    (   oro_check(myself, Patterns)
+    ->  Bool = true
+    ;   Bool = false
+    ).
+
+m_find(Var, Patterns, list(Texts)) :-
+    oro_find(myself, Var, Patterns, Values),
+    maplist(term_string_value, Values, Texts).
+
+term_string_value(Term, string(Text)) :-
+    oro_term_text(Term, Text).
+
+		 /*******************************
+		 *       LABELS, LOOKUP         *
+		 *******************************/
+
+method(lookup(string), base,
+       "Returns the [id, type] pairs whose label or name is the text (case-insensitive).",
+       m_lookup).
+method(lookup(string, string), base,
+       "Returns the ids of the given type (instance, class, object_property, datatype_property) whose label or name is the text.",
+       m_lookup).
+method(getLabel(string), base,
+       "Returns the label of a resource (else its name).",
+       m_get_label).
+method(getInfos(string), querying,
+       "Returns the statements (asserted or inferred) about a resource.",
+       m_get_infos).
+method(about(string), querying,
+       "Returns the statements about a resource (alias of getInfos).",
+       m_get_infos).
+method(getResourceDetails(string), querying,
+       "Returns a JSON description of a resource: label, type, classes, properties...",
+       m_resource_details).
+method(getResourceDetails(string, string), querying,
+       "Returns a JSON description of a resource, with labels in the given language.",
+       m_resource_details).
+
+m_lookup(Text, list(Pairs)) :-
+    oro_lookup(myself, Text, Matches),
+    maplist(match_pair, Matches, Pairs).
+
+match_pair(R-Kind, list([string(Id), string(Type)])) :-
+    oro_iri_name(R, Id),
+    upcase_atom(Kind, Type).
+
+m_lookup(Text, TypeText, list(Ids)) :-
+    string_lower(TypeText, Lower),
+    atom_string(Kind, Lower),
+    oro_lookup(myself, Text, Matches),
+    findall(string(Id), ( member(R-Kind, Matches), oro_iri_name(R, Id) ), Ids).
+
+m_get_label(Id, string(Label)) :-
+    resource(Id, R),
+    oro_label(myself, R, Label).
+
+m_get_infos(Id, list(Texts)) :-
+    resource(Id, R),
+    oro_infos(myself, R, Triples),
+    maplist(local_statement, Triples, Texts).
+
+local_statement(rdf(S, P, O), string(Text)) :-
+    oro_term_local_text(S, ST),
+    oro_term_local_text(P, PT),
+    oro_term_local_text(O, OT),
+    atomic_list_concat([ST, PT, OT], ' ', Text).
+
+m_resource_details(Id, raw(JSON)) :-
+    resource(Id, R),
+    oro_resource_details(myself, R, en, Details),
+    details_json(Details, JSON).
+
+m_resource_details(Id, Lang, raw(JSON)) :-
+    resource(Id, R),
+    atom_string(L, Lang),
+    oro_resource_details(myself, R, L, Details),
+    details_json(Details, JSON).
+
+resource(Id, IRI) :-
+    oro_name_iri(Id, IRI).
+
+%   The JSON of getResourceDetails, in the exact layout oro-view reads.
+
+details_json(D, JSON) :-
+    json_string(D.name, Name),
+    resource_json(D.id, Id),
+    json_string(D.type, Type),
+    maplist(resource_json, D.same_as, Same),
+    atomic_list_concat(Same, ',', SameText),
+    maplist(attribute_json, D.attributes, Attrs),
+    atomic_list_concat(Attrs, ',', AttrText),
+    format(string(JSON),
+           '{"name":~w,"id":~w,"type":~w,"sameAs":[~w],"attributes": [~w]}',
+           [Name, Id, Type, SameText, AttrText]).
+
+attribute_json(attribute(Name, Id, Values), JSON) :-
+    json_string(Name, N),
+    json_string(Id, I),
+    maplist(value_json, Values, Vs),
+    atomic_list_concat(Vs, ',', VText),
+    format(string(JSON), '{"name":~w,"id":~w,"values":[~w]}', [N, I, VText]).
+
+value_json(value(Label, literal), JSON) :-
+    !,
+    json_string(Label, L),
+    format(string(JSON), '{"name":~w, "id":"literal"}', [L]).
+value_json(value(Label, R), JSON) :-
+    json_string(Label, L),
+    resource_json(R, I),
+    format(string(JSON), '{"name":~w, "id":~w}', [L, I]).
+
+resource_json(R, JSON) :-
+    oro_iri_name(R, Name),
+    json_string(Name, JSON).
+
+json_string(Text, JSON) :-
+    with_output_to(string(JSON), json_write_string(Text)).
+
+json_write_string(Text) :-
+    atom_codes(Text, Codes),
+    put_char('"'),
+    forall(member(C, Codes), json_char(C)),
+    put_char('"').
+
+json_char(0'") :- !, write('\\"').
+json_char(0'\\) :- !, write('\\\\').
+json_char(0'\n) :- !, write('\\n').
+json_char(0'\r) :- !, write('\\r').
+json_char(0'\t) :- !, write('\\t').
+json_char(C) :- C < 0x20, !, format('\\u~|~`0t~16r~4+', [C]).
+json_char(C) :- put_char(C).
+
+		 /*******************************
+		 *           TAXONOMY           *
+		 *******************************/
+
+method(getSuperclassesOf(string), taxonomy,
+       "Returns all the super-classes of a class, with their labels.",
+       m_taxonomy(oro_superclasses)).
+method(getDirectSuperclassesOf(string), taxonomy,
+       "Returns the direct super-classes of a class, with their labels.",
+       m_taxonomy(oro_direct_superclasses)).
+method(getSubclassesOf(string), taxonomy,
+       "Returns all the sub-classes of a class, with their labels.",
+       m_taxonomy(oro_subclasses)).
+method(getDirectSubclassesOf(string), taxonomy,
+       "Returns the direct sub-classes of a class, with their labels.",
+       m_taxonomy(oro_direct_subclasses)).
+method(getInstancesOf(string), taxonomy,
+       "Returns all the instances of a class, with their labels.",
+       m_taxonomy(oro_instances)).
+method(getDirectInstancesOf(string), taxonomy,
+       "Returns the instances whose most specific class is the given one, with their labels.",
+       m_taxonomy(oro_direct_instances)).
+method(getClassesOf(string), taxonomy,
+       "Returns all the classes of an individual, with their labels.",
+       m_taxonomy(oro_classes_of)).
+method(getDirectClassesOf(string), taxonomy,
+       "Returns the most specific classes of an individual, with their labels.",
+       m_taxonomy(oro_direct_classes_of)).
+
+m_taxonomy(Question, Id, map(Pairs)) :-
+    resource(Id, R),
+    call(Question, myself, R, Resources),
+    maplist(labelled, Resources, Pairs).
+
+labelled(R, Name-string(Label)) :-
+    oro_iri_name(R, Name),
+    oro_label(myself, R, Label).
+
+		 /*******************************
+		 *            HELPERS           *
+		 *******************************/
+
+statement_text(rdf(S, P, O), Text) :-
+    oro_term_light_text(S, ST),
+    oro_term_light_text(P, PT),
+    oro_term_light_text(O, OT),
+    atomic_list_concat([ST, PT, OT], ' ', Text).

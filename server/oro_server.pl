@@ -1,0 +1,238 @@
+:- module(oro_server,
+          [ oro_server_start/2,         % +Options, -Server
+            oro_server_stop/1,          % +Server
+            oro_server_port/2           % +Server, -Port
+          ]).
+:- use_module(library(socket)).
+:- use_module(library(thread_pool)).
+:- use_module(library(main), [argv_options/3]).
+:- use_module(library(option)).
+:- use_module(library(error)).
+:- use_module(library(debug)).
+:- use_module(library(settings)).
+:- use_module('../prolog/oro').
+:- use_module(oro_protocol).
+:- use_module(oro_methods).
+
+/** <module> The ORO socket server
+
+    swipl server/oro_server.pl [--port=N] [--host=ADDR] [--ontology=FILE]...
+                               [--no-commonsense] [--robot-id=ID]
+                               [--time-base=MS] [--save-dir=DIR]
+
+An accept thread hands each connection to a worker of a bounded pool
+(`max_connections`); each worker reads requests with oro_protocol,
+runs them through oro_methods and writes the replies.  Requests from
+different clients run concurrently (changes are serialised by the
+store); a slow or broken client only holds its own worker.  Every
+connection is closed and released by setup_call_cleanup/3, whatever
+happens.
+
+The server starts from main/0 (the command line) or
+oro_server_start/2 (tests, embedding); loading this file starts
+nothing.
+*/
+
+%   Run main/0 only when this file is the script swipl was started with,
+%   so that tests and programs can load the module without starting it.
+
+:- prolog_load_context(file, File),
+   (   current_prolog_flag(associated_file, File)
+   ->  initialization(main, main)
+   ;   true
+   ).
+
+:- setting(max_connections, positive_integer, 256,
+           'Maximum number of simultaneous client connections').
+:- setting(max_request_size, positive_integer, 16777216,
+           'Maximum size of one request, in bytes').
+
+opt_type(port, port, nonneg).
+opt_type(host, host, atom).
+opt_type(ontology, ontology, file(read)).
+opt_type(commonsense, commonsense, boolean).
+opt_type('robot-id', robot_id, atom).
+opt_type('time-base', time_base, nonneg).
+opt_type('save-dir', save_dir, directory).
+opt_type(help, help, boolean).
+opt_type(h, help, boolean).
+
+opt_help(help(header), "oro: a knowledge server for cognitive robots, \c
+         speaking the ORO protocol.").
+opt_help(help(usage), " [option ...]").
+opt_help(port, "TCP port to listen on (default 6969)").
+opt_help(host, "Address to listen on (default 127.0.0.1, loopback only)").
+opt_help(ontology, "Load an ontology (.owl/.rdf RDF/XML, .ttl Turtle, \c
+         .nt N-Triples); repeatable").
+opt_help(commonsense, "Load the bundled common-sense ontology \c
+         (default true; --no-commonsense skips it)").
+opt_help(robot_id, "Id of the robot: a synonym of myself").
+opt_help(time_base, "Length of one memory time unit in ms (default 1000)").
+opt_help(save_dir, "Directory where save may write files (default .)").
+opt_help(help, "Show this help").
+
+%!  main is det.
+%
+%   Start the server from the command line and serve until killed.
+
+main :-
+    current_prolog_flag(argv, Argv),
+    argv_options(Argv, Positional, Options),
+    (   Positional == []
+    ->  true
+    ;   format(user_error, "oro: unexpected argument(s) ~w (see --help)~n",
+               [Positional]),
+        halt(1)
+    ),
+    catch(oro_server_start(Options, Server), E,
+          ( print_message(error, E),
+            halt(1)
+          )),
+    oro_server_port(Server, Port),
+    option(host(Host), Options, '127.0.0.1'),
+    format("oro listening on ~w:~w~n", [Host, Port]),
+    flush_output,
+    thread_get_message(oro_server_stop).
+
+%!  oro_server_start(+Options, -Server) is det.
+%
+%   Initialise the knowledge base and start listening.  Options are
+%   those of the command line: port(Port) (default 6969; 0 picks a
+%   free port), host(Host) (default '127.0.0.1'), ontology(File)
+%   (repeatable), commonsense(Bool), robot_id(Id), time_base(MS),
+%   save_dir(Dir).  Server is an opaque handle.
+
+oro_server_start(Options, Server) :-
+    must_be(list, Options),
+    option(port(Port0), Options, 6969),
+    option(host(Host), Options, '127.0.0.1'),
+    option(commonsense(CommonSense), Options, true),
+    option(robot_id(RobotId), Options, ''),
+    option(save_dir(SaveDir), Options, '.'),
+    findall(F, member(ontology(F), Options), Files),
+    oro_init([ commonsense(CommonSense),
+               ontologies(Files),
+               robot_id(RobotId),
+               save_dir(SaveDir)
+             ]),
+    tcp_socket(Socket),
+    tcp_setopt(Socket, reuseaddr),
+    (   Port0 =:= 0
+    ->  tcp_bind(Socket, Host:Port)
+    ;   Port = Port0,
+        tcp_bind(Socket, Host:Port)
+    ),
+    tcp_listen(Socket, 64),
+    setting(max_connections, Max),
+    gensym(oro_pool_, Pool),
+    thread_pool_create(Pool, Max, [backlog(0)]),
+    get_time(Started),
+    Server = oro_server{socket:Socket, port:Port, pool:Pool,
+                        started:Started, accept:Accept},
+    thread_create(accept_loop(Server), Accept, []),
+    debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
+
+%!  oro_server_port(+Server, -Port) is det.
+%
+%   The port Server listens on.
+
+oro_server_port(Server, Port) :-
+    Port = Server.port.
+
+%!  oro_server_stop(+Server) is det.
+%
+%   Stop accepting connections and release the listening socket.
+%   Connections in progress finish their current request.
+
+oro_server_stop(Server) :-
+    thread_signal(Server.accept, throw(oro_stop)),
+    catch(thread_join(Server.accept, _), _, true),
+    catch(tcp_close_socket(Server.socket), _, true),
+    catch(thread_pool_destroy(Server.pool), _, true).
+
+accept_loop(Server) :-
+    catch(accept_connections(Server), oro_stop, true).
+
+accept_connections(Server) :-
+    repeat,
+    tcp_accept(Server.socket, Client, Peer),
+    start_connection(Server, Client, Peer),
+    fail.
+
+start_connection(Server, Client, Peer) :-
+    catch(thread_create_in_pool(Server.pool,
+                                serve_connection(Server, Client, Peer),
+                                _, [detached(true), wait(false)]),
+          Error,
+          refuse_connection(Client, Error)).
+
+refuse_connection(Client, Error) :-
+    print_message(warning, Error),
+    catch(setup_call_cleanup(
+              tcp_open_socket(Client, Pair),
+              ( stream_pair(Pair, _, Out),
+                set_stream(Out, encoding(utf8)),
+                oro_write_error(Out,
+                                "laas.openrobots.ontology.exceptions.OntologyServerException",
+                                "Too many connections: try again later.")
+              ),
+              close(Pair, [force(true)])),
+          _, true).
+
+serve_connection(Server, Client, Peer) :-
+    setup_call_cleanup(
+        tcp_open_socket(Client, Pair),
+        serve_stream(Server, Pair, Peer),
+        close(Pair, [force(true)])).
+
+serve_stream(Server, Pair, Peer) :-
+    stream_pair(Pair, In, Out),
+    set_stream(Out, encoding(utf8)),
+    set_stream(Out, newline(posix)),
+    debug(oro(server), 'Connection from ~q', [Peer]),
+    setting(max_request_size, Limit),
+    Context = _{started:Server.started, peer:Peer, out:Out},
+    catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
+            serve_requests(Context, Reader, Out)
+          ), Error,
+          debug(oro(server), 'Connection ~q ended: ~q', [Peer, Error])).
+
+serve_requests(Context, Reader0, Out) :-
+    oro_read_request(Reader0, Request, Reader),
+    (   handle_request(Request, Context, Out)
+    ->  serve_requests(Context, Reader, Out)
+    ;   true
+    ).
+
+%   handle_request(+Request, +Context, +Out) is semidet: fails when the
+%   connection must end.
+
+handle_request(end_of_file, _, _) :-
+    !,
+    fail.
+handle_request(help, Context, Out) :-
+    !,
+    handle_request(request("help", []), Context, Out).
+handle_request(bad(too_large(Limit)), _, Out) :-
+    !,
+    format(string(Message), "Request larger than ~d bytes: closing the \c
+           connection.", [Limit]),
+    oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                    Message),
+    fail.
+handle_request(bad(encoding), _, Out) :-
+    !,
+    oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                    "The request is not valid UTF-8.").
+handle_request(request(Method, _), _, Out) :-
+    string_lower(Method, "close"),
+    !,
+    oro_write_closing(Out),
+    fail.
+handle_request(request(Method, Params), Context, Out) :-
+    oro_dispatch(Context, Method, Params, Reply),
+    (   Reply = ok(Value)
+    ->  oro_write_ok(Out, Value)
+    ;   Reply = error(Name, Message),
+        oro_write_error(Out, Name, Message)
+    ).
