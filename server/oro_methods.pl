@@ -61,7 +61,10 @@ listed by listMethods, listSimpleMethods and help.
 %   error(ExceptionName, Message).
 
 oro_dispatch(Context, Method, Params, Reply) :-
-    catch(dispatch(Context, Method, Params, Value), Error, true),
+    (   catch(dispatch(Context, Method, Params, Value), Error, true)
+    ->  true
+    ;   Error = error(oro_method(failed), _)
+    ),
     (   var(Error)
     ->  Reply = ok(Value)
     ;   oro_error_response(Error, Name, Message),
@@ -69,6 +72,15 @@ oro_dispatch(Context, Method, Params, Reply) :-
         Reply = error(Name, Message)
     ).
 
+dispatch(Context, Method, Params, Value) :-
+    length(Params, Arity),
+    atom_string(Exact, Method),
+    functor(Skeleton, Exact, Arity),
+    method(Skeleton, _, _, Impl),           % the usual case: exact name
+    !,
+    Skeleton =.. [_|Types],
+    decode_params(Types, Params, Method, Args),
+    call_method(Impl, Context, Args, Value).
 dispatch(Context, Method, Params, Value) :-
     string_lower(Method, Lower),
     atom_string(Name, Lower),

@@ -1,6 +1,7 @@
 :- module(oro_protocol,
           [ oro_reader/3,               % +In, -Reader, +Options
             oro_read_request/3,         % +Reader0, -Request, -Reader
+            oro_drain_input/3,          % +In, +MaxBytes, +Seconds
             oro_write_ok/2,             % +Out, +Value
             oro_write_error/3,          % +Out, +ExceptionName, +Message
             oro_write_event/3,          % +Out, +WatcherId, +Content
@@ -161,6 +162,34 @@ oro_read_request(oro_reader(In, Limit, Mode, State0), Request,
     ;   State = State1
     ),
     debug_request(Request).
+
+%!  oro_drain_input(+In, +MaxBytes, +Seconds) is det.
+%
+%   Read and discard what the peer still sends on In, up to MaxBytes or
+%   until nothing arrives for Seconds, or end of file.  Used before
+%   closing a connection whose stream is out of sync (a request too
+%   large), so the peer is not reset before it reads our error.
+
+oro_drain_input(In, MaxBytes, Seconds) :-
+    must_be(nonneg, MaxBytes),
+    must_be(number, Seconds),
+    catch(( set_stream(In, timeout(Seconds)),
+            drain(In, MaxBytes)
+          ),
+          _, true).
+
+drain(In, Budget) :-
+    (   Budget =< 0
+    ->  true
+    ;   fill_buffer(In),
+        read_pending_codes(In, Codes, []),
+        length(Codes, N),
+        (   N =:= 0
+        ->  true
+        ;   Budget1 is Budget - N,
+            drain(In, Budget1)
+        )
+    ).
 
 must_be_input_stream(In) :-
     (   var(In)

@@ -51,25 +51,25 @@ opt_type(port, port, nonneg).
 opt_type(host, host, atom).
 opt_type(ontology, ontology, file(read)).
 opt_type(commonsense, commonsense, boolean).
-opt_type('robot-id', robot_id, atom).
-opt_type('time-base', time_base, nonneg).
-opt_type('save-dir', save_dir, directory).
-opt_type(help, help, boolean).
-opt_type(h, help, boolean).
+opt_type(robot_id, robot_id, atom).
+opt_type(time_base, time_base, nonneg).
+opt_type(save_dir, save_dir, directory).
 
-opt_help(help(header), "oro: a knowledge server for cognitive robots, \c
-         speaking the ORO protocol.").
-opt_help(help(usage), " [option ...]").
-opt_help(port, "TCP port to listen on (default 6969)").
-opt_help(host, "Address to listen on (default 127.0.0.1, loopback only)").
-opt_help(ontology, "Load an ontology (.owl/.rdf RDF/XML, .ttl Turtle, \c
-         .nt N-Triples); repeatable").
-opt_help(commonsense, "Load the bundled common-sense ontology \c
-         (default true; --no-commonsense skips it)").
-opt_help(robot_id, "Id of the robot: a synonym of myself").
-opt_help(time_base, "Length of one memory time unit in ms (default 1000)").
-opt_help(save_dir, "Directory where save may write files (default .)").
-opt_help(help, "Show this help").
+usage("Usage: swipl server/oro_server.pl [option ...]
+
+oro: a knowledge server for cognitive robots, speaking the ORO protocol.
+
+Options:
+  --port=N           TCP port to listen on (default 6969; 0 picks a free one)
+  --host=ADDR        Address to listen on (default 127.0.0.1, loopback only)
+  --ontology=FILE    Load an ontology (.owl/.rdf RDF/XML, .ttl Turtle,
+                     .nt N-Triples); repeatable
+  --no-commonsense   Do not load the bundled common-sense ontology
+  --robot-id=ID      Id of the robot: a synonym of myself
+  --time-base=MS     Length of one memory time unit in ms (default 1000)
+  --save-dir=DIR     Directory where save may write files (default .)
+  -h, --help         Show this help
+").
 
 %!  main is det.
 %
@@ -77,6 +77,12 @@ opt_help(help, "Show this help").
 
 main :-
     current_prolog_flag(argv, Argv),
+    (   ( memberchk('--help', Argv) ; memberchk('-h', Argv) )
+    ->  usage(Usage),
+        format("~w", [Usage]),
+        halt(0)
+    ;   true
+    ),
     argv_options(Argv, Positional, Options),
     (   Positional == []
     ->  true
@@ -191,7 +197,7 @@ serve_stream(Server, Pair, Peer) :-
     set_stream(Out, newline(posix)),
     debug(oro(server), 'Connection from ~q', [Peer]),
     setting(max_request_size, Limit),
-    Context = _{started:Server.started, peer:Peer, out:Out},
+    Context = _{started:Server.started, peer:Peer, in:In, out:Out},
     catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
             serve_requests(Context, Reader, Out)
           ), Error,
@@ -213,12 +219,14 @@ handle_request(end_of_file, _, _) :-
 handle_request(help, Context, Out) :-
     !,
     handle_request(request("help", []), Context, Out).
-handle_request(bad(too_large(Limit)), _, Out) :-
+handle_request(bad(too_large(Limit)), Context, Out) :-
     !,
     format(string(Message), "Request larger than ~d bytes: closing the \c
            connection.", [Limit]),
     oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                     Message),
+    Drain is 4 * Limit,
+    oro_drain_input(Context.in, Drain, 2),
     fail.
 handle_request(bad(encoding), _, Out) :-
     !,

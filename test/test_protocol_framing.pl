@@ -87,7 +87,7 @@ serve_requests(Reader0, Out, Status) :-
     ;   Request = bad(too_large(Limit))
     ->  format(string(Message), "Request larger than ~D bytes.", [Limit]),
         oro_write_error(Out, 'RequestTooLarge', Message),
-        drain(In),
+        oro_drain_input(In, 100000000, 10),
         Status = too_large
     ;   answer(Request, Out),
         serve_requests(Reader, Out, Status)
@@ -105,19 +105,6 @@ string_value(Text, string(Text)).
 
 %   drain(+In): read and drop the rest of the input until the peer
 %   closes (bounded by a stream timeout).
-
-drain(In) :-
-    set_stream(In, encoding(octet)),
-    set_stream(In, timeout(10)),
-    catch(drain_(In), _, true).
-
-drain_(In) :-
-    fill_buffer(In),
-    read_pending_codes(In, Codes, []),
-    (   Codes == []
-    ->  true
-    ;   drain_(In)
-    ).
 
 server_port(Name, Port) :-
     echo_server(Name, Port, _).

@@ -1,0 +1,121 @@
+/*  Tests of the command line: swipl server/oro_server.pl [options],
+    run as a child process, as a user would.
+*/
+
+:- use_module(library(plunit)).
+:- use_module(library(process)).
+:- use_module(library(readutil)).
+:- use_module(library(socket)).
+:- use_module(library(lists)).
+
+:- dynamic cli_test_dir/1.
+:- prolog_load_context(directory, Dir),
+   retractall(cli_test_dir(_)),
+   assertz(cli_test_dir(Dir)).
+
+cli_path(Relative, Path) :-
+    cli_test_dir(Dir),
+    atomic_list_concat([Dir, '/../', Relative], Path0),
+    absolute_file_name(Path0, Path).
+
+%!  cli_run(+Args, -ExitCode, -Output) is det.
+%
+%   Run the server with Args until it exits by itself (at most 30 s);
+%   Output is stdout and stderr.
+
+cli_run(Args, Code, Output) :-
+    cli_path('server/oro_server.pl', Server),
+    setup_call_cleanup(
+        process_create(path(timeout), ['30', swipl, Server|Args],
+                       [ stdout(pipe(Out)), stderr(pipe(Err)),
+                         process(Pid)
+                       ]),
+        ( read_string(Out, _, O),
+          read_string(Err, _, E),
+          process_wait(Pid, exit(Code))
+        ),
+        ( close(Out), close(Err) )),
+    string_concat(O, E, Output).
+
+%!  cli_with_server(+Args, -Port, :Goal, -Stderr) is det.
+%
+%   Start the server with Args and --port=0, wait for its listening
+%   line, run Goal, stop the server; Stderr is what it printed there.
+
+:- meta_predicate cli_with_server(+, -, 0, -).
+
+cli_with_server(Args, Port, Goal, Stderr) :-
+    cli_path('server/oro_server.pl', Server),
+    setup_call_cleanup(
+        process_create(path(timeout), ['60', swipl, Server, '--port=0'|Args],
+                       [ stdout(pipe(Out)), stderr(pipe(Err)),
+                         process(Pid)
+                       ]),
+        ( read_line_to_string(Out, Line),
+          (   split_string(Line, ":", " ", Parts),
+              last(Parts, PortText),
+              number_string(Port, PortText)
+          ->  call(Goal)
+          ;   Port = none
+          )
+        ),
+        ( process_kill(Pid),
+          process_wait(Pid, _),
+          read_string(Err, _, Stderr),
+          close(Out),
+          close(Err)
+        )).
+
+hello(Port, Reply) :-
+    setup_call_cleanup(
+        tcp_connect('127.0.0.1':Port, Pair, []),
+        ( stream_pair(Pair, In, Out),
+          format(Out, "hello~n#end#~n", []),
+          flush_output(Out),
+          read_line_to_string(In, Status),
+          read_line_to_string(In, Value),
+          read_line_to_string(In, End),
+          Reply = [Status, Value, End]
+        ),
+        close(Pair)).
+
+shared_ontology(Name, Path) :-
+    cli_path('../shared/ontologies', Dir),
+    directory_file_path(Dir, Name, Path),
+    exists_file(Path).
+
+:- begin_tests(command_line).
+
+test(help, [true(Code-Has == 0-true)]) :-
+    cli_run(['--help'], Code, Output),
+    (   sub_string(Output, _, _, _, "--robot-id")
+    ->  Has = true
+    ;   Has = false
+    ).
+test(unknown_option, [true(Code \== 0)]) :-
+    cli_run(['--bogus'], Code, _).
+test(bad_port, [true(Code \== 0)]) :-
+    cli_run(['--port=abc'], Code, _).
+test(missing_ontology, [true(Code \== 0)]) :-
+    cli_run(['--ontology=/nonexistent/x.owl'], Code, _).
+test(listening_default_ontology, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
+    cli_with_server([], Port, hello(Port, Reply), _).
+test(no_commonsense_and_robot_id, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
+    cli_path('test/fixtures/testsuite.ttl', Fixture),
+    atom_concat('--ontology=', Fixture, Opt),
+    cli_with_server(['--no-commonsense', Opt, '--robot-id=ROBOT',
+                     '--time-base=100'],
+                    Port, hello(Port, Reply), _).
+test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
+    (   shared_ontology('oro.owl', ORO),
+        shared_ontology('testsuite.oro.owl', TS)
+    ->  atom_concat('--ontology=', ORO, O1),
+        atom_concat('--ontology=', TS, O2),
+        cli_with_server([O1, O2], Port, hello(Port, Reply), Stderr)
+    ;   format(user_error, "~NNotice: ../shared/ontologies absent: \c
+                            skipping the public ontologies test~n", []),
+        Stderr = "",
+        Reply = ["ok", "\"oro-server 0.8.2\"", "#end#"]
+    ).
+
+:- end_tests(command_line).
