@@ -37,6 +37,17 @@
             oro_resource_kind/3,        % +Model, +Resource, -Kind
             oro_infos/3,                % +Model, +Resource, -Triples
             oro_resource_details/4,     % +Model, +Resource, +Lang, -Details
+            % events
+            oro_subscribe/7,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Id
+            oro_unsubscribe/1,          % +Id
+            oro_register_event/7,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, -Id
+            oro_subscriber_create/3,    % :Deliver, -Subscriber, +Options
+            oro_subscriber_destroy/1,   % +Subscriber
+            oro_clear_events/1,         % +Model
+            oro_clear_events/2,         % +Model, +Registry
+            oro_clear_event/2,          % +Model, +Id
+            oro_watchers/2,             % +Model, -Watchers
+            oro_events_sync/0,
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text
@@ -45,6 +56,8 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(oro/oro_names).
 :- use_module(oro/oro_knowledge).
+:- use_module(oro/oro_parse).
+:- use_module(oro/oro_events).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

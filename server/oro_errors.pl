@@ -46,6 +46,7 @@ one_line(Text, Line) :-
 
 exception_name(not_implemented, "NotImplementedException") :- !.
 exception_name(not_found, "com.hp.hpl.jena.shared.NotFoundException") :- !.
+exception_name(illegal_argument, "java.lang.IllegalArgumentException") :- !.
 exception_name(Short, Name) :-
     oro_exception(Short, Class),
     atom_concat('laas.openrobots.ontology.exceptions.', Class, Name0),
@@ -55,6 +56,9 @@ oro_exception(illegal_statement, 'IllegalStatementException').
 oro_exception(server, 'OntologyServerException').
 oro_exception(agent_not_found, 'AgentNotFoundException').
 oro_exception(invalid_query, 'InvalidQueryException').
+oro_exception(invalid_event, 'InvalidEventDescriptorException').
+oro_exception(event_registration, 'EventRegistrationException').
+oro_exception(event_not_found, 'EventNotFoundException').
 
 %   error_table(+Formal, -Exception, -Format, -Args)
 
@@ -110,5 +114,29 @@ error_table(permission_error(write, oro_file, File), server,
              written under the save directory.', [File]).
 error_table(existence_error(source_sink, File), server,
             'Error while opening ~w.', [File]).
+error_table(domain_error(oro_event_type, Type), invalid_event,
+            'Invalid event type. One of [FACT_CHECKING, NEW_CLASS_INSTANCE, \c
+             NEW_INSTANCE] was expected. Got ~w instead.', [Type]).
+error_table(domain_error(oro_event_trigger, Trigger), invalid_event,
+            'Invalid event triggering type. One of [ON_TRUE, ON_TRUE_ONE_SHOT, \c
+             ON_FALSE, ON_FALSE_ONE_SHOT, ON_TOGGLE] was expected. Got ~w \c
+             instead.', [Trigger]).
+error_table(domain_error(oro_event_variable, _), invalid_event,
+            'NEW_INSTANCE events require as first parameter a variable name \c
+             to bind.', []).
+error_table(oro_event_registration(unknown_class(Class)), event_registration,
+            'The class ~w does not exists in the ontology. Cannot register \c
+             the NEW_INSTANCE event!', [Class]).
+error_table(oro_event_registration(class_pattern(N)), event_registration,
+            'Wrong pattern for a NEW_CLASS_INSTANCE event: ~d elements \c
+             given. Only one class name was expected.', [N]).
+error_table(oro_event_registration(pattern(Formal)), event_registration,
+            'Error in the event pattern: ~w. Check the syntax of your \c
+             statement.', [Message]) :-
+    oro_error_response(error(Formal, _), _, Message).
+error_table(existence_error(event, Id), event_not_found,
+            'Event ~w does not exist in the model', [Id]).
+error_table(domain_error(uuid, Id), illegal_argument,
+            'Invalid UUID string: ~w', [Id]).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

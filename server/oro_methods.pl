@@ -1,5 +1,6 @@
 :- module(oro_methods,
           [ oro_dispatch/4,             % +Context, +Method, +Params, -Reply
+            oro_connection_closed/1,    % +Context
             oro_method_signature/2,     % ?Name, ?Signature
             oro_simple_signature/2      % +Signature, -Text
           ]).
@@ -14,6 +15,7 @@
 :- use_module('../prolog/oro/oro_names').
 :- use_module('../prolog/oro/oro_store').
 :- use_module(oro_errors).
+:- use_module(oro_protocol).
 
 /** <module> The ORO method table and dispatcher
 
@@ -491,6 +493,109 @@ m_taxonomy(Question, Id, map(Pairs)) :-
 labelled(R, Name-string(Label)) :-
     oro_iri_name(R, Name),
     oro_label(myself, R, Label).
+
+		 /*******************************
+		 *            EVENTS            *
+		 *******************************/
+
+method(registerEvent(string, string, list), events,
+       "Registers an event (FACT_CHECKING, NEW_INSTANCE, NEW_CLASS_INSTANCE) with a trigger (ON_TRUE, ON_TRUE_ONE_SHOT, ON_FALSE, ON_FALSE_ONE_SHOT, ON_TOGGLE) on patterns; returns its id.",
+       context(m_register_event)).
+method(registerEvent(string, string, string, list), events,
+       "Registers an event whose variable (for NEW_INSTANCE) is given; returns its id.",
+       context(m_register_event)).
+method(registerEventForAgent(string, string, string, list), events,
+       "Registers an event on an agent's model; returns its id.",
+       context(m_register_event_for_agent)).
+method(registerEventForAgent(string, string, string, string, list), events,
+       "Registers an event with a variable on an agent's model; returns its id.",
+       context(m_register_event_for_agent)).
+method(clearEvents, events,
+       "Removes every event registered with registerEvent.",
+       m_clear_events).
+method(clearEvent(string), events,
+       "Removes the event with this id.",
+       m_clear_event).
+method(clearEventsForAgent(string), events,
+       "Removes every event registered with registerEventForAgent on this agent.",
+       m_clear_events_for_agent).
+method(clearEvent(string, string), events,
+       "Removes the event with this id from this agent's model.",
+       m_clear_event_for_agent).
+
+m_register_event(Context, Type, Trigger, Patterns, raw(Id)) :-
+    register_event(Context, plain, myself, Type, Trigger, '', Patterns, Id).
+m_register_event(Context, Type, Trigger, Var, Patterns, raw(Id)) :-
+    register_event(Context, plain, myself, Type, Trigger, Var, Patterns, Id).
+
+m_register_event_for_agent(Context, Agent, Type, Trigger, Patterns, raw(Id)) :-
+    agent_model(Agent, Model),
+    register_event(Context, agent, Model, Type, Trigger, '', Patterns, Id).
+m_register_event_for_agent(Context, Agent, Type, Trigger, Var, Patterns, raw(Id)) :-
+    agent_model(Agent, Model),
+    register_event(Context, agent, Model, Type, Trigger, Var, Patterns, Id).
+
+register_event(Context, Registry, Model, Type, Trigger, Var, Patterns, Id) :-
+    connection_subscriber(Context, Registry, Subscriber),
+    oro_register_event(Model, Type, Trigger, Var, Patterns, Subscriber, Id).
+
+m_clear_events(void) :-
+    oro_clear_events(myself).
+
+m_clear_event(Id, void) :-
+    oro_clear_event(myself, Id).
+
+m_clear_events_for_agent(Agent, void) :-
+    agent_model(Agent, Model),
+    oro_clear_events(Model, agent).
+
+m_clear_event_for_agent(Agent, Id, void) :-
+    agent_model(Agent, Model),
+    oro_clear_event(Model, Id).
+
+agent_model(Agent, Model) :-
+    atom_string(Name, Agent),
+    oro_resolve_model(Name, Model).
+
+%   The subscriber of a connection, one per registry, made on first use:
+%   its events are written on the connection under the connection's
+%   mutex; if it falls too far behind, the connection is closed.
+
+connection_subscriber(Context, Registry, Subscriber) :-
+    Slot = Context.subscribers,
+    arg(1, Slot, Subscribers),
+    (   memberchk(Registry-Subscriber0, Subscribers)
+    ->  Subscriber = Subscriber0
+    ;   Out = Context.out,
+        Mutex = Context.mutex,
+        Thread = Context.thread,
+        oro_subscriber_create(deliver_event(Out, Mutex), Subscriber,
+                              [ registry(Registry),
+                                on_overflow(thread_signal(Thread,
+                                                          throw(oro_events_overflow)))
+                              ]),
+        nb_setarg(1, Slot, [Registry-Subscriber|Subscribers])
+    ).
+
+deliver_event(Out, Mutex, Id, Content) :-
+    event_content(Content, Value),
+    with_mutex(Mutex, oro_write_event(Out, Id, Value)).
+
+event_content([], void) :-
+    !.
+event_content(Values, list(Texts)) :-
+    maplist(term_string_value, Values, Texts).
+
+%!  oro_connection_closed(+Context) is det.
+%
+%   Release what a connection holds: its event subscribers (and the
+%   watchers only they subscribed to).
+
+oro_connection_closed(Context) :-
+    arg(1, Context.subscribers, Subscribers),
+    forall(member(_-Subscriber, Subscribers),
+           catch(oro_subscriber_destroy(Subscriber), E,
+                 print_message(warning, E))).
 
 		 /*******************************
 		 *            HELPERS           *

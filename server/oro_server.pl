@@ -191,17 +191,30 @@ serve_connection(Server, Client, Peer) :-
         serve_stream(Server, Pair, Peer),
         close(Pair, [force(true)])).
 
+%   The connection's context: its streams, the mutex every write to it
+%   holds (replies and pushed events never interleave, and a reply is
+%   written before the events its request caused), and a slot for its
+%   event subscribers (oro_methods creates them on first registration;
+%   they are destroyed with the connection).
+
 serve_stream(Server, Pair, Peer) :-
     stream_pair(Pair, In, Out),
     set_stream(Out, encoding(utf8)),
     set_stream(Out, newline(posix)),
     debug(oro(server), 'Connection from ~q', [Peer]),
     setting(max_request_size, Limit),
-    Context = _{started:Server.started, peer:Peer, in:In, out:Out},
-    catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
-            serve_requests(Context, Reader, Out)
-          ), Error,
-          debug(oro(server), 'Connection ~q ended: ~q', [Peer, Error])).
+    thread_self(Me),
+    setup_call_cleanup(
+        mutex_create(Mutex),
+        ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
+                      mutex:Mutex, thread:Me, subscribers:slot([])},
+          catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
+                  serve_requests(Context, Reader, Out)
+                ), Error,
+                debug(oro(server), 'Connection ~q ended: ~q', [Peer, Error])),
+          oro_connection_closed(Context)
+        ),
+        mutex_destroy(Mutex)).
 
 serve_requests(Context, Reader0, Out) :-
     oro_read_request(Reader0, Request, Reader),
@@ -223,24 +236,28 @@ handle_request(bad(too_large(Limit)), Context, Out) :-
     !,
     format(string(Message), "Request larger than ~d bytes: closing the \c
            connection.", [Limit]),
-    oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
-                    Message),
+    with_mutex(Context.mutex,
+               oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                               Message)),
     Drain is 4 * Limit,
     oro_drain_input(Context.in, Drain, 2),
     fail.
-handle_request(bad(encoding), _, Out) :-
+handle_request(bad(encoding), Context, Out) :-
     !,
-    oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
-                    "The request is not valid UTF-8.").
-handle_request(request(Method, _), _, Out) :-
+    with_mutex(Context.mutex,
+               oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                               "The request is not valid UTF-8.")).
+handle_request(request(Method, _), Context, Out) :-
     string_lower(Method, "close"),
     !,
-    oro_write_closing(Out),
+    with_mutex(Context.mutex, oro_write_closing(Out)),
     fail.
 handle_request(request(Method, Params), Context, Out) :-
-    oro_dispatch(Context, Method, Params, Reply),
-    (   Reply = ok(Value)
-    ->  oro_write_ok(Out, Value)
-    ;   Reply = error(Name, Message),
-        oro_write_error(Out, Name, Message)
-    ).
+    with_mutex(Context.mutex,
+               ( oro_dispatch(Context, Method, Params, Reply),
+                 (   Reply = ok(Value)
+                 ->  oro_write_ok(Out, Value)
+                 ;   Reply = error(Name, Message),
+                     oro_write_error(Out, Name, Message)
+                 )
+               )).

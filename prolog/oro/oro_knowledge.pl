@@ -7,7 +7,6 @@
             oro_update/2,               % +Model, +Statements
             oro_check/2,                % +Model, +Patterns
             oro_find/4,                 % +Model, ?Var, +Patterns, -Values
-            oro_statements/3,           % +Statements, -Triples, -Bindings
             oro_save/2,                 % +Model, +File
             oro_robot_id/1              % -Id
           ]).
@@ -22,6 +21,7 @@
 :- use_module(oro_store).
 :- use_module(oro_reason).
 :- use_module(oro_query).
+:- use_module(oro_events).
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
 
@@ -94,14 +94,17 @@ oro_init(Options) :-
     ;   true
     ),
     maplist(oro_load_ontology, Files),
+    oro_events_start,
+    oro_events_reset,
     create_robot_model.
 
 %!  oro_reset is det.
 %
-%   Forget every model, agent and fact asserted since oro_init/1; the
-%   ontology layer stays as loaded.
+%   Forget every model, agent, event watcher and fact asserted since
+%   oro_init/1; the ontology layer stays as loaded.
 
 oro_reset :-
+    oro_events_reset,
     oro_wipe_models,
     create_robot_model.
 
@@ -127,49 +130,6 @@ oro_robot_id(Id) :-
 		 /*******************************
 		 *         STATEMENTS           *
 		 *******************************/
-
-%!  oro_statements(+Statements, -Triples, -Bindings) is det.
-%
-%   Normalise Statements (text or rdf/3 terms, see the module doc)
-%   into rdf(S,P,O) triples of IRIs, literals and variables.  Bindings
-%   maps the names of `?name` variables of text patterns to the
-%   variables of Triples, as Name=Var pairs; variables with the same
-%   name in several statements are shared.
-%
-%   @error syntax_error(oro_statement_tokens(N, Text)) and the other
-%          errors of oro_parse_statement/2.
-
-oro_statements(Statements, Triples, Bindings) :-
-    must_be(list, Statements),
-    foldl(statement_triple, Statements, Triples, [], Bindings0),
-    reverse(Bindings0, Bindings).
-
-statement_triple(Statement, rdf(S, P, O), B0, B) :-
-    (   text(Statement)
-    ->  oro_parse_statement(Statement, rdf(S0, P0, O0)),
-        foldl(bind_var, [S0-S, P0-P, O0-O], B0, B)
-    ;   Statement = rdf(S0, P0, O0)
-    ->  oro_resource(S0, S),
-        oro_resource(P0, P),
-        oro_object(O0, O),
-        B = B0
-    ;   type_error(oro_statement, Statement)
-    ).
-
-text(X) :-
-    (   string(X)
-    ->  true
-    ;   atom(X)
-    ).
-
-bind_var(var(Name)-Var, B0, B) :-
-    !,
-    (   memberchk(Name=Var0, B0)
-    ->  Var = Var0,
-        B = B0
-    ;   B = [Name=Var|B0]
-    ).
-bind_var(Term-Term, B, B).
 
 complete_triples(Statements, Triples) :-
     oro_statements(Statements, Triples, _),
@@ -307,6 +267,12 @@ oro_find(Model0, Var, Patterns, Values) :-
         ;   Values = []
         )
     ;   oro_find_values(Model, Var, Triples, Values)
+    ).
+
+text(X) :-
+    (   string(X)
+    ->  true
+    ;   atom(X)
     ).
 
 variable_name(Text, Name) :-

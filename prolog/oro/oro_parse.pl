@@ -5,7 +5,8 @@
             oro_parse_map/2,            % +Text, -Pairs
             oro_parse_statement/2,      % +Text, -Triple
             oro_parse_statements/2,     % +Texts, -Triples
-            oro_is_partial/1            % +Triple
+            oro_is_partial/1,           % +Triple
+            oro_statements/3            % +Statements, -Triples, -Bindings
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -930,3 +931,52 @@ digits_star -->
     digits_star.
 digits_star -->
     [].
+
+
+                 /*******************************
+                 *        API STATEMENTS        *
+                 *******************************/
+
+%!  oro_statements(+Statements, -Triples, -Bindings) is det.
+%
+%   Normalise Statements (text or rdf/3 terms, see the module doc)
+%   into rdf(S,P,O) triples of IRIs, literals and variables.  Bindings
+%   maps the names of `?name` variables of text patterns to the
+%   variables of Triples, as Name=Var pairs; variables with the same
+%   name in several statements are shared.
+%
+%   @error syntax_error(oro_statement_tokens(N, Text)) and the other
+%          errors of oro_parse_statement/2.
+
+oro_statements(Statements, Triples, Bindings) :-
+    must_be(list, Statements),
+    foldl(statement_triple, Statements, Triples, [], Bindings0),
+    reverse(Bindings0, Bindings).
+
+statement_triple(Statement, rdf(S, P, O), B0, B) :-
+    (   statement_text(Statement)
+    ->  oro_parse_statement(Statement, rdf(S0, P0, O0)),
+        foldl(bind_var, [S0-S, P0-P, O0-O], B0, B)
+    ;   Statement = rdf(S0, P0, O0)
+    ->  oro_resource(S0, S),
+        oro_resource(P0, P),
+        oro_object(O0, O),
+        B = B0
+    ;   type_error(oro_statement, Statement)
+    ).
+
+statement_text(X) :-
+    (   string(X)
+    ->  true
+    ;   atom(X)
+    ).
+
+bind_var(var(Name)-Var, B0, B) :-
+    !,
+    (   memberchk(Name=Var0, B0)
+    ->  Var = Var0,
+        B = B0
+    ;   B = [Name=Var|B0]
+    ).
+bind_var(Term-Term, B, B).
+

@@ -10,7 +10,11 @@
             oro_functional_property/2,  % +Model, ?Property
             oro_transitive_property/2,  % +Model, ?Property
             oro_literal_match/2,        % +Pattern, +Literal
-            oro_meta_namespace/1        % +IRI
+            oro_meta_namespace/1,       % +IRI
+            oro_compile_schema/2,       % +Model, -Key
+            oro_drop_schema/1,          % +Key
+            oro_with_schemas/2,         % +ModelKeys, :Goal
+            oro_pattern_dependencies/3  % +Model, +Triples, -Predicates
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
@@ -18,7 +22,11 @@
 :- use_module(library(pairs)).
 :- use_module(library(ordsets)).
 :- use_module(library(debug)).
+:- use_module(library(error)).
 :- use_module(oro_store).
+
+:- meta_predicate
+    oro_with_schemas(+, 0).
 :- use_module(oro_names).
 
 /** <module> Reasoning: the inference closure of a model
@@ -101,23 +109,76 @@ after a schema change.
 %   compiling them if the schema changed since they were made.
 
 schema(Model, Key) :-
+    nb_current(oro_schema_keys, Keys),
+    memberchk(Model-Key0, Keys),
+    !,
+    Key = Key0.
+schema(Model, Key) :-
     oro_schema_generation(Gen),
     (   schema_key(Model, Gen, Key0)
     ->  Key = Key0
     ;   with_mutex(oro_schema, compile_schema_once(Model, Gen, Key))
     ).
 
+%   The tables are kept for Gen only if no schema change started while
+%   they were compiled (oro_store bumps the generation before a schema
+%   change becomes visible and again once it is committed or rolled
+%   back), so a cached key never holds a schema older or newer than its
+%   generation.
+
 compile_schema_once(Model, Gen, Key) :-
     (   schema_key(Model, Gen, Key0)
     ->  Key = Key0
     ;   flag(oro_schema_key, Key, Key+1),
         compile_schema(Model, Key),
-        forall(retract(schema_key(Model, _, Old)),
-               drop_schema(Old)),
-        assertz(schema_key(Model, Gen, Key)),
-        debug(oro(reason), 'Schema of ~q compiled as ~q (generation ~q)',
-              [Model, Key, Gen])
+        oro_schema_generation(Gen1),
+        (   Gen1 == Gen
+        ->  forall(retract(schema_key(Model, _, Old)),
+                   drop_schema(Old)),
+            assertz(schema_key(Model, Gen, Key)),
+            debug(oro(reason), 'Schema of ~q compiled as ~q (generation ~q)',
+                  [Model, Key, Gen])
+        ;   drop_schema(Key)
+        )
     ).
+
+%!  oro_compile_schema(+Model, -Key) is det.
+%
+%   Compile the schema of Model as the calling thread sees the store
+%   now (in a snapshot, for instance) into fresh tables identified by
+%   Key, outside the shared cache.  Use it with oro_with_schemas/2 and
+%   release it with oro_drop_schema/1.  The event watcher uses this to
+%   evaluate each change with the schema of that very change.
+
+oro_compile_schema(Model, Key) :-
+    must_be(atom, Model),
+    flag(oro_schema_key, Key, Key+1),
+    compile_schema(Model, Key).
+
+%!  oro_drop_schema(+Key) is det.
+%
+%   Release tables made by oro_compile_schema/2.
+
+oro_drop_schema(Key) :-
+    must_be(integer, Key),
+    retract_schema(Key).
+
+%!  oro_with_schemas(+ModelKeys, :Goal) is semidet.
+%
+%   Run Goal (once) with the schema tables of each Model-Key pair of
+%   ModelKeys instead of the shared cache, in this thread.
+
+oro_with_schemas(ModelKeys, Goal) :-
+    must_be(list, ModelKeys),
+    (   nb_current(oro_schema_keys, Old)
+    ->  true
+    ;   Old = []
+    ),
+    setup_call_cleanup(
+        b_setval(oro_schema_keys, ModelKeys),
+        once(Goal),
+        b_setval(oro_schema_keys, Old)).
+
 
 %   Tables of an old key are dropped one compilation later, so a reader
 %   that started with it does not see them vanish.
@@ -1033,3 +1094,54 @@ oro_functional_property(Model, Property) :-
 oro_transitive_property(Model, Property) :-
     schema(Model, Key),
     s_transitive(Key, Property).
+
+%!  oro_pattern_dependencies(+Model, +Triples, -Predicates) is det.
+%
+%   Predicates is the ordered set of predicates whose asserted triples
+%   can change the solutions of the patterns Triples in Model, through
+%   sub-properties, inverses, symmetry, transitivity, domains, ranges
+%   and owl:sameAs; it is `[any]` when any triple can (a variable
+%   predicate, a variable class, owl:Thing).  Schema changes are not
+%   covered: they can change anything.
+
+oro_pattern_dependencies(Model, Triples, Predicates) :-
+    must_be(list, Triples),
+    schema(Model, Key),
+    (   member(rdf(_, P, O), Triples),
+        depends_on_any(P, O)
+    ->  Predicates = [any]
+    ;   findall(Q, ( member(rdf(_, P, O), Triples),
+                     pattern_dependency(Key, P, O, Q)
+                   ), Qs),
+        rdf_equal(owl:sameAs, SameAs),
+        sort([SameAs|Qs], Predicates)
+    ).
+
+depends_on_any(P, _) :-
+    var(P),
+    !.
+depends_on_any(P, O) :-
+    rdf_equal(P, rdf:type),
+    (   var(O)
+    ->  true
+    ;   rdf_equal(O, owl:'Thing')
+    ).
+
+pattern_dependency(Key, P, O, Q) :-
+    rdf_equal(P, rdf:type),
+    !,
+    (   Q = P
+    ;   s_subj_implies(Key, Q, O)
+    ;   s_obj_implies(Key, Q, O)
+    ).
+pattern_dependency(_, P, _, _) :-
+    (   rdf_equal(P, rdfs:subClassOf)
+    ;   rdf_equal(P, rdfs:subPropertyOf)
+    ),
+    !,
+    fail.
+pattern_dependency(Key, P, _, Q) :-
+    (   way(Key, P, Q, _)
+    ;   s_trans_way(Key, P, T, _),
+        way(Key, T, Q, _)
+    ).

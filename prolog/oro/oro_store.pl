@@ -194,8 +194,22 @@ rdf_graph_count(Graph, N) :-
 %   readers are not blocked.
 
 oro_store_write(Action, Goal) :-
-    with_mutex(oro_write,
-               rdf_transaction(Goal, oro(Action))).
+    with_mutex(oro_write, store_write(Action, Goal)).
+
+%   A schema change bumps the generation when it is made (before other
+%   threads can see it) and again once the transaction is over,
+%   committed or not (see oro_reason's schema cache).
+
+store_write(Action, Goal) :-
+    flag(oro_schema_generation, Before, Before),
+    setup_call_cleanup(
+        true,
+        rdf_transaction(Goal, oro(Action)),
+        (   flag(oro_schema_generation, After, After),
+            After =\= Before
+        ->  flag(oro_schema_generation, G, G+1)
+        ;   true
+        )).
 
 %!  oro_store_assert(+Model, +Triples, +Profile) is det.
 %
