@@ -5,6 +5,7 @@
             oro_robot_id/1,             % -Id
             % changes
             oro_add/2,                  % +Model, +Statements
+            oro_add/3,                  % +Model, +Statements, +Profile
             oro_remove/2,               % +Model, +Statements
             oro_clear/2,                % +Model, +Patterns
             oro_update/2,               % +Model, +Statements
@@ -48,6 +49,11 @@
             oro_clear_event/2,          % +Model, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
+            % agents and memory
+            oro_agents/1,               % -Names
+            oro_create_agent/2,         % +Name, +Individual
+            oro_revise/2,               % +Statements, +Policy
+            oro_memory_deadlines/2,     % +Model, -Deadlines
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text
@@ -58,6 +64,8 @@
 :- use_module(oro/oro_knowledge).
 :- use_module(oro/oro_parse).
 :- use_module(oro/oro_events).
+:- use_module(oro/oro_agents).
+:- use_module(oro/oro_memory).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

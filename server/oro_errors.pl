@@ -44,7 +44,7 @@ one_line(Text, Line) :-
     atomic_list_concat(Parts, ' ', Atom),
     atom_string(Atom, Line).
 
-exception_name(not_implemented, "NotImplementedException") :- !.
+exception_name(dispatcher, "NotImplementedException") :- !.
 exception_name(not_found, "com.hp.hpl.jena.shared.NotFoundException") :- !.
 exception_name(illegal_argument, "java.lang.IllegalArgumentException") :- !.
 exception_name(Short, Name) :-
@@ -59,15 +59,17 @@ oro_exception(invalid_query, 'InvalidQueryException').
 oro_exception(invalid_event, 'InvalidEventDescriptorException').
 oro_exception(event_registration, 'EventRegistrationException').
 oro_exception(event_not_found, 'EventNotFoundException').
+oro_exception(not_implemented, 'NotImplementedException').
+oro_exception(invalid_policy, 'InvalidPolicyException').
 
 %   error_table(+Formal, -Exception, -Format, -Args)
 
-error_table(oro_method(unknown, Name), not_implemented,
+error_table(oro_method(unknown, Name), dispatcher,
             'Method "~w" not implemented.', [Name]).
-error_table(oro_method(arity(N), Name), not_implemented,
+error_table(oro_method(arity(N), Name), dispatcher,
             'Error while executing the request: wrong number of parameters \c
              provided for method "~w" (~d were provided).', [Name, N]).
-error_table(oro_method(prototype, Name), not_implemented,
+error_table(oro_method(prototype, Name), dispatcher,
             'Error while executing the request: no method prototype for \c
              \'~w\' match the given arguments.', [Name]).
 error_table(oro_method(failed), server,
@@ -138,5 +140,22 @@ error_table(existence_error(event, Id), event_not_found,
             'Event ~w does not exist in the model', [Id]).
 error_table(domain_error(uuid, Id), illegal_argument,
             'Invalid UUID string: ~w', [Id]).
+error_table(domain_error(oro_revision_method, Method), invalid_policy,
+            'Invalid revision method "~w": one of add, safe_add, retract or \c
+             update was expected.', [Method]).
+error_table(existence_error(oro_revision_method, Method), not_implemented,
+            'The revision method ~w is not implemented.', [Method]).
+error_table(domain_error(oro_revision_policy, Text), invalid_policy,
+            'The revision policy must be a JSON object: ~w', [Text]).
+error_table(domain_error(oro_memory_profile, Profile), illegal_argument,
+            'Unknown memory profile ~w.', [Profile]).
+error_table(domain_error(oro_find_variables, N), server,
+            'One unbound variable must be given to execute a \'find\' \c
+             (~d given).', [N]) :-
+    N =:= 0.
+error_table(domain_error(oro_find_variables, _), not_implemented,
+            'find can be executed only on a single agent model', []).
+error_table(domain_error(oro_find_agents, _), not_implemented,
+            'find can be executed only on a single agent model', []).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

@@ -10,6 +10,7 @@
 :- use_module(library(pairs)).
 :- use_module(library(error)).
 :- use_module(library(debug)).
+:- use_module(library(http/json)).
 :- use_module('../prolog/oro').
 :- use_module('../prolog/oro/oro_parse').
 :- use_module('../prolog/oro/oro_names').
@@ -329,9 +330,8 @@ m_check(Patterns, bool(Bool)) :-
     ;   Bool = false
     ).
 
-m_find(Var, Patterns, list(Texts)) :-
-    oro_find(myself, Var, Patterns, Values),
-    maplist(term_string_value, Values, Texts).
+m_find(Var, Patterns, Values) :-
+    find_values(myself, Var, Patterns, Values).
 
 term_string_value(Term, string(Text)) :-
     oro_term_text(Term, Text).
@@ -362,8 +362,11 @@ method(getResourceDetails(string, string), querying,
        "Returns a JSON description of a resource, with labels in the given language.",
        m_resource_details).
 
-m_lookup(Text, list(Pairs)) :-
-    oro_lookup(myself, Text, Matches),
+m_lookup(Text, Pairs) :-
+    lookup_pairs(myself, Text, Pairs).
+
+lookup_pairs(Model, Text, list(Pairs)) :-
+    oro_lookup(Model, Text, Matches),
     maplist(match_pair, Matches, Pairs).
 
 match_pair(R-Kind, list([string(Id), string(Type)])) :-
@@ -380,9 +383,12 @@ m_get_label(Id, string(Label)) :-
     resource(Id, R),
     oro_label(myself, R, Label).
 
-m_get_infos(Id, list(Texts)) :-
+m_get_infos(Id, Infos) :-
+    infos(myself, Id, Infos).
+
+infos(Model, Id, list(Texts)) :-
     resource(Id, R),
-    oro_infos(myself, R, Triples),
+    oro_infos(Model, R, Triples),
     maplist(local_statement, Triples, Texts).
 
 local_statement(rdf(S, P, O), string(Text)) :-
@@ -493,6 +499,146 @@ m_taxonomy(Question, Id, map(Pairs)) :-
 labelled(R, Name-string(Label)) :-
     oro_iri_name(R, Name),
     oro_label(myself, R, Label).
+
+		 /*******************************
+		 *       AGENTS AND MEMORY      *
+		 *******************************/
+
+method(add(set, string), base,
+       "Adds statements with a memory profile: SHORTTERM, EPISODIC, LONGTERM or DEFAULT.",
+       m_add_profile).
+method(listAgents, agents,
+       "Returns the names of the agent models: myself, its aliases and the other agents.",
+       m_list_agents).
+method(addForAgent(string, set), agents,
+       "Adds statements to an agent's model.",
+       m_add_for_agent).
+method(addForAgent(string, set, string), agents,
+       "Adds statements to an agent's model with a memory profile.",
+       m_add_for_agent).
+method(safeAddForAgent(string, set), agents,
+       "Adds statements to an agent's model (no consistency check yet: always true).",
+       m_safe_add_for_agent).
+method(safeAddForAgent(string, set, string), agents,
+       "Adds statements to an agent's model with a memory profile (no consistency check yet: always true).",
+       m_safe_add_for_agent).
+method(removeForAgent(string, set), agents,
+       "Removes statements (or statements matching patterns) from an agent's model.",
+       m_clear_for_agent).
+method(clearForAgent(string, set), agents,
+       "Removes every asserted statement matching one of the patterns from an agent's model.",
+       m_clear_for_agent).
+method(updateForAgent(string, set), agents,
+       "Adds statements to an agent's model, replacing the values of functional properties.",
+       m_update_for_agent).
+method(findForAgent(string, string, set), agents,
+       "Returns the values of a variable satisfying the patterns in an agent's model.",
+       m_find_for_agent).
+method(findForAgent(string, string, set, set), agents,
+       "Returns the values of a variable satisfying the patterns and SPARQL filters in an agent's model.",
+       m_find_for_agent).
+method(find(set, set, set, set), querying,
+       "KB-API find: one variable, patterns, SPARQL filters (or null) and one agent (or null for myself).",
+       m_find_kb).
+method(getInfosForAgent(string, string), agent,
+       "Returns the statements about a resource in an agent's model.",
+       m_get_infos_for_agent).
+method(lookupForAgent(string, string), agents,
+       "Returns the [id, type] pairs whose label or name is the text, in an agent's model.",
+       m_lookup_for_agent).
+method(save(string, string), agents,
+       "Saves an agent's model as RDF/XML to the given file, under the save directory.",
+       m_save_for_agent).
+method(revise(set, string), base,
+       "Applies statements to models as a JSON policy says: {\"method\": \"add\"|\"safe_add\"|\"retract\"|\"update\", \"models\": [...], \"memory_profile\": ...}.",
+       m_revise).
+
+m_add_profile(Statements, Profile, void) :-
+    oro_add(myself, Statements, Profile).
+
+m_list_agents(list(Names)) :-
+    oro_agents(Agents),
+    maplist(atom_string_value, Agents, Names).
+
+atom_string_value(Atom, string(String)) :-
+    atom_string(Atom, String).
+
+m_add_for_agent(Agent, Statements, void) :-
+    agent_model(Agent, Model),
+    oro_add(Model, Statements).
+m_add_for_agent(Agent, Statements, Profile, void) :-
+    agent_model(Agent, Model),
+    oro_add(Model, Statements, Profile).
+
+m_safe_add_for_agent(Agent, Statements, bool(true)) :-
+    m_add_for_agent(Agent, Statements, void).
+m_safe_add_for_agent(Agent, Statements, Profile, bool(true)) :-
+    m_add_for_agent(Agent, Statements, Profile, void).
+
+m_clear_for_agent(Agent, Patterns, void) :-
+    agent_model(Agent, Model),
+    oro_clear(Model, Patterns).
+
+m_update_for_agent(Agent, Statements, void) :-
+    agent_model(Agent, Model),
+    oro_update(Model, Statements).
+
+m_find_for_agent(Agent, Var, Patterns, Values) :-
+    agent_model(Agent, Model),
+    find_values(Model, Var, Patterns, Values).
+
+m_find_for_agent(Agent, Var, Patterns, Filters, Values) :-
+    agent_model(Agent, Model),
+    find_filtered(Model, Var, Patterns, Filters, Values).
+
+m_find_kb(Vars, Patterns, Filters, Agents, Values) :-
+    length(Vars, NVars),
+    (   NVars =:= 1
+    ->  Vars = [Var]
+    ;   throw(error(domain_error(oro_find_variables, NVars), _))
+    ),
+    (   Agents == []
+    ->  Model = myself
+    ;   Agents = [Agent]
+    ->  agent_model(Agent, Model)
+    ;   throw(error(domain_error(oro_find_agents, Agents), _))
+    ),
+    find_filtered(Model, Var, Patterns, Filters, Values).
+
+%   Filters are SPARQL expressions, evaluated by oro_sparql.
+
+find_filtered(Model, Var, Patterns, [], Values) :-
+    !,
+    find_values(Model, Var, Patterns, Values).
+find_filtered(Model, Var, Patterns, Filters, list(Texts)) :-
+    oro_sparql:oro_find(Model, Var, Patterns, Filters, Values),
+    maplist(term_string_value, Values, Texts).
+
+find_values(Model, Var, Patterns, list(Texts)) :-
+    oro_find(Model, Var, Patterns, Values),
+    maplist(term_string_value, Values, Texts).
+
+m_get_infos_for_agent(Agent, Id, Infos) :-
+    agent_model(Agent, Model),
+    infos(Model, Id, Infos).
+
+m_lookup_for_agent(Agent, Text, Pairs) :-
+    agent_model(Agent, Model),
+    lookup_pairs(Model, Text, Pairs).
+
+m_save_for_agent(Agent, Path, void) :-
+    agent_model(Agent, Model),
+    atom_string(File, Path),
+    oro_save(Model, File).
+
+m_revise(Statements, PolicyText, void) :-
+    catch(atom_json_dict(PolicyText, Policy, []), _,
+          throw(error(domain_error(oro_revision_policy, PolicyText), _))),
+    (   is_dict(Policy)
+    ->  true
+    ;   throw(error(domain_error(oro_revision_policy, PolicyText), _))
+    ),
+    oro_revise(Statements, Policy).
 
 		 /*******************************
 		 *            EVENTS            *

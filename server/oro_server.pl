@@ -13,6 +13,7 @@
 :- use_module('../prolog/oro').
 :- use_module(oro_protocol).
 :- use_module(oro_methods).
+:- use_module(oro_plugins).
 
 /** <module> The ORO socket server
 
@@ -54,6 +55,7 @@ opt_type(commonsense, commonsense, boolean).
 opt_type(robot_id, robot_id, atom).
 opt_type(time_base, time_base, nonneg).
 opt_type(save_dir, save_dir, directory).
+opt_type(plugin, plugin, file(read)).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -68,6 +70,7 @@ Options:
   --robot-id=ID      Id of the robot: a synonym of myself
   --time-base=MS     Length of one memory time unit in ms (default 1000)
   --save-dir=DIR     Directory where save may write files (default .)
+  --plugin=FILE      Load a Prolog plugin declaring extra methods; repeatable
   -h, --help         Show this help
 ").
 
@@ -106,7 +109,9 @@ main :-
 %   those of the command line: port(Port) (default 6969; 0 picks a
 %   free port), host(Host) (default '127.0.0.1'), ontology(File)
 %   (repeatable), commonsense(Bool), robot_id(Id), time_base(MS),
-%   save_dir(Dir).  Server is an opaque handle.
+%   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
+%   plugin that cannot be loaded is reported and skipped).  Server is
+%   an opaque handle.
 
 oro_server_start(Options, Server) :-
     must_be(list, Options),
@@ -121,6 +126,8 @@ oro_server_start(Options, Server) :-
                robot_id(RobotId),
                save_dir(SaveDir)
              ]),
+    findall(P, member(plugin(P), Options), Plugins),
+    oro_load_plugins(Plugins),
     tcp_socket(Socket),
     tcp_setopt(Socket, reuseaddr),
     (   Port0 =:= 0

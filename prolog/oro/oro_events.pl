@@ -81,6 +81,7 @@ messages.
     subscription/2,                 % Id, Subscriber
     subscriber/3,                   % Subscriber, Queue, Thread
     callback_subscriber/2,          % Id, Subscriber
+    pending_direct/3,               % Deliver, Id, Content
     model_schema/2,                 % Model, Key (the watcher thread's)
     touched/2,                      % Model, Predicate  (thread_local use)
     touched_schema/0,
@@ -346,7 +347,7 @@ oro_clear_events(Model) :-
 
 oro_clear_events(Model0, Registry) :-
     oro_resolve_model(Model0, Model),
-    must_be(oneof([plain, agent]), Registry),
+    must_be(oneof([plain, agent, internal]), Registry),
     call_watcher(clear(Model, Registry)).
 
 %!  oro_clear_event(+Model, +Id) is det.
@@ -385,7 +386,8 @@ oro_watchers(Model0, Watchers) :-
 :- predicate_options(oro_subscriber_create/3, 3,
                      [ max_queue(positive_integer),
                        on_overflow(callable),
-                       registry(oneof([plain, agent]))
+                       registry(oneof([plain, agent, internal])),
+                       in_watcher(boolean)
                      ]).
 
 %!  oro_subscriber_create(:Deliver, -Subscriber, +Options) is det.
@@ -400,17 +402,27 @@ oro_watchers(Model0, Watchers) :-
 %     - on_overflow(:Goal): called (in a thread of its own) when it is
 %       dropped;
 %     - registry(+Registry): `plain` (default) or `agent`, which
-%       clearEvents() and clearEventsForAgent() address apart.
+%       clearEvents() and clearEventsForAgent() address apart, or
+%       `internal`, which neither clears (oro's own watchers);
+%     - in_watcher(+Bool): if `true`, Deliver is called directly by the
+%       watcher thread, before the change is considered processed (see
+%       oro_events_sync/0).  For oro's own short, non-blocking
+%       reactions only, such as creating agent models.
 
 oro_subscriber_create(Deliver, Subscriber, Options) :-
     must_be(list, Options),
     option(max_queue(Max), Options, 10000),
     option(on_overflow(OnOverflow), Options, true),
     option(registry(Registry), Options, plain),
+    option(in_watcher(InWatcher), Options, false),
     gensym(oro_subscriber_, Name),
     Subscriber = subscriber(Name, Registry, OnOverflow),
-    message_queue_create(Queue, [max_size(Max)]),
-    thread_create(deliver_loop(Queue, Deliver), Thread, []),
+    (   InWatcher == true
+    ->  Queue = direct(Deliver),
+        Thread = none
+    ;   message_queue_create(Queue, [max_size(Max)]),
+        thread_create(deliver_loop(Queue, Deliver), Thread, [])
+    ),
     with_mutex(oro_events, assertz(subscriber(Subscriber, Queue, Thread))).
 
 subscriber_registry(subscriber(_, Registry, _), Registry) :-
@@ -425,7 +437,10 @@ subscriber_registry(Subscriber, _) :-
 %   thread.
 
 oro_subscriber_destroy(Subscriber) :-
-    (   subscriber(Subscriber, Queue, Thread)
+    (   subscriber(Subscriber, direct(_), _)
+    ->  call_watcher(unsubscribe(Subscriber)),
+        with_mutex(oro_events, retractall(subscriber(Subscriber, _, _)))
+    ;   subscriber(Subscriber, Queue, Thread)
     ->  call_watcher(unsubscribe(Subscriber)),
         thread_send_message(Queue, '$stop'),
         thread_self(Me),
@@ -485,13 +500,22 @@ watcher_loop :-
 
 handle(change(Snapshot, Touched, Schema)) :-
     call_cleanup(process_change(Snapshot, Touched, Schema),
-                 rdf_delete_snapshot(Snapshot)).
+                 rdf_delete_snapshot(Snapshot)),
+    run_direct_deliveries.
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
     ->  Result = Result0
     ;   Result = error(failed(Request))
     ),
     thread_send_message(Thread, reply(Tag, Result)).
+
+%   Deliveries to in_watcher subscribers run once the snapshot
+%   transaction is over, so they may change the store.
+
+run_direct_deliveries :-
+    forall(retract(pending_direct(Deliver, Id, Content)),
+           catch(call(Deliver, Id, Content), E,
+                 print_message(warning, E))).
 
 request(sync, true).
 request(reset, true) :-
@@ -761,7 +785,9 @@ fire(Id, Content) :-
            send_firing(Subscriber, Id, Content)).
 
 send_firing(Subscriber, Id, Content) :-
-    (   subscriber(Subscriber, Queue, _),
+    (   subscriber(Subscriber, direct(Deliver), _)
+    ->  assertz(pending_direct(Deliver, Id, Content))  % run after the snapshot
+    ;   subscriber(Subscriber, Queue, _),
         thread_send_message(Queue, event(Id, Content), [timeout(0)])
     ->  true
     ;   overflow(Subscriber)

@@ -2,6 +2,7 @@
           [ oro_init/1,                 % +Options
             oro_reset/0,
             oro_add/2,                  % +Model, +Statements
+            oro_add/3,                  % +Model, +Statements, +Profile
             oro_remove/2,               % +Model, +Statements
             oro_clear/2,                % +Model, +Patterns
             oro_update/2,               % +Model, +Statements
@@ -22,6 +23,7 @@
 :- use_module(oro_reason).
 :- use_module(oro_query).
 :- use_module(oro_events).
+:- use_module(oro_memory).
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
 
@@ -58,6 +60,7 @@ anything changes.
 :- predicate_options(oro_init/1, 1,
                      [ commonsense(boolean),
                        ontologies(list(atom)),
+                       time_base(positive_integer),
                        robot_id(atom),
                        save_dir(atom)
                      ]).
@@ -72,6 +75,7 @@ anything changes.
 %     - ontologies(+Files): more ontology files (RDF/XML, Turtle or
 %       N-Triples), loaded in order;
 %     - robot_id(+Id): a synonym of `myself`;
+%     - time_base(+MS): length of one memory time unit (default 1000);
 %     - save_dir(+Dir): where oro_save/2 may write (default `.`).
 
 oro_init(Options) :-
@@ -80,12 +84,20 @@ oro_init(Options) :-
     option(ontologies(Files), Options, []),
     option(robot_id(RobotId), Options, ''),
     option(save_dir(SaveDir), Options, '.'),
+    option(time_base(TimeBase), Options, 1000),
+    must_be(positive_integer, TimeBase),
     must_be(boolean, CommonSense),
     must_be(list(atom), Files),
     must_be(atom, RobotId),
     must_be(atom, SaveDir),
+    (   catch(thread_property(oro_watcher, status(running)), _, fail)
+    ->  oro_events_sync                     % no snapshot left in flight
+    ;   true
+    ),
     set_setting(robot_id, RobotId),
     set_setting(save_dir, SaveDir),
+    set_setting(oro_memory:time_base, TimeBase),
+    oro_memory_reset,
     oro_store_reset,
     (   CommonSense == true
     ->  absolute_file_name(oro_ontologies('commonsense.ttl'), CS,
@@ -96,7 +108,8 @@ oro_init(Options) :-
     maplist(oro_load_ontology, Files),
     oro_events_start,
     oro_events_reset,
-    create_robot_model.
+    create_robot_model,
+    oro_agents:oro_agents_start.
 
 %!  oro_reset is det.
 %
@@ -105,8 +118,10 @@ oro_init(Options) :-
 
 oro_reset :-
     oro_events_reset,
+    oro_memory_reset,
     oro_wipe_models,
-    create_robot_model.
+    create_robot_model,
+    oro_agents:oro_agents_start.
 
 create_robot_model :-
     oro_create_model(myself),
@@ -153,11 +168,23 @@ complete_triples(Statements, Triples) :-
 %   @error syntax_error(_) if a statement is malformed or incomplete;
 %          nothing is then changed.
 
-oro_add(Model0, Statements) :-
+oro_add(Model, Statements) :-
+    oro_add(Model, Statements, longterm).
+
+%!  oro_add(+Model, +Statements, +Profile) is det.
+%
+%   Assert Statements in Model with the memory Profile: `longterm`
+%   (also `default`: never forgotten), `shortterm` or `episodic` (see
+%   oro_memory); names in any case, unknown ones meaning `longterm`.
+
+oro_add(Model0, Statements, Profile0) :-
     oro_resolve_model(Model0, Model),
+    oro_memory_profile(Profile0, Profile),
     complete_triples(Statements, Triples),
     oro_store_write(add(Model),
-                    oro_store_assert(Model, Triples, longterm)).
+                    ( oro_store_assert(Model, Triples, Profile),
+                      oro_memory_remember(Model, Profile, Triples)
+                    )).
 
 %!  oro_remove(+Model, +Statements) is det.
 %

@@ -10,6 +10,7 @@
             oro_asserted_count/2,       % +Model, -Count
             oro_store_assert/3,         % +Model, +Triples, +Profile
             oro_store_retract/2,        % +Model, +Triples
+            oro_store_forget/3,         % +Model, +Profile, +Triples
             oro_store_write/2,          % +Action, :Goal
             oro_schema_generation/1,    % -Generation
             oro_schema_triple/2,        % +P, +O
@@ -137,12 +138,27 @@ oro_add_model_alias(Alias, Model) :-
 
 oro_resolve_model(Name, Model) :-
     must_be(atom, Name),
-    (   oro_model(Name)
-    ->  Model = Name
-    ;   model_alias(Name, Model0)
+    (   known_model(Name, Model0)
+    ->  Model = Model0
+    ;   catch(resolve_hook(Name), _, fail),
+        known_model(Name, Model0)
     ->  Model = Model0
     ;   existence_error(agent, Name)
     ).
+
+known_model(Name, Model) :-
+    (   oro_model(Name)
+    ->  Model = Name
+    ;   model_alias(Name, Model)
+    ).
+
+%!  resolve_hook(+Name) is semidet.
+%
+%   Multifile hook called when no model is named Name, before giving
+%   up: the agents module waits there for agent models still being
+%   created.
+
+:- multifile resolve_hook/1.
 
 %!  oro_asserted(+Model, ?S, ?P, ?O) is nondet.
 %
@@ -220,18 +236,51 @@ store_write(Action, Goal) :-
 oro_store_assert(Model, Triples, Profile) :-
     oro_graph(Model, profile(Profile), Graph),
     oro_graph(Model, mask, Mask),
-    maplist(assert_triple(Graph, Mask, Model), Triples).
+    maplist(assert_triple(Graph, Mask, Model, Profile), Triples).
 
-assert_triple(Graph, Mask, Model, rdf(S, P, O)) :-
+%   A long-term triple is asserted once, wherever it is visible from.  A
+%   triple of a shorter profile goes in that profile's graph (where its
+%   lifetime is counted) unless it is already there or lives forever.
+
+assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     note_schema_change(P, O),
     (   rdf(S, P, O, Mask)
     ->  rdf_retractall(S, P, O, Mask)
     ;   true
     ),
-    (   oro_asserted(Model, S, P, O)
+    (   Profile == longterm
+    ->  (   oro_asserted(Model, S, P, O)
+        ->  true
+        ;   rdf_assert(S, P, O, Graph)
+        )
+    ;   (   rdf(S, P, O, Graph)
+        ;   forever(Model, S, P, O)
+        )
     ->  true
     ;   rdf_assert(S, P, O, Graph)
     ).
+
+forever(Model, S, P, O) :-
+    oro_graph(Model, profile(longterm), Long),
+    (   rdf(S, P, O, Long)
+    ->  true
+    ;   ontology_graph(Onto),
+        rdf(S, P, O, Onto)
+    ->  true
+    ).
+
+%!  oro_store_forget(+Model, +Profile, +Triples) is det.
+%
+%   Remove Triples from the graph of Profile of Model only (their
+%   lifetime in that profile is over); they stay visible if asserted
+%   with another profile.  Must run inside oro_store_write/2.
+
+oro_store_forget(Model, Profile, Triples) :-
+    oro_graph(Model, profile(Profile), Graph),
+    forall(member(rdf(S, P, O), Triples),
+           ( note_schema_change(P, O),
+             rdf_retractall(S, P, O, Graph)
+           )).
 
 %!  oro_store_retract(+Model, +Triples) is det.
 %
@@ -376,11 +425,13 @@ presize_indexes :-
 
 %!  oro_store_reset is det.
 %
-%   Empty the whole store: every model, alias and ontology graph.
+%   Empty the whole store: every model, alias and ontology graph.  The
+%   graphs are unloaded rather than the database reset (rdf_reset_db/0),
+%   which would free the snapshots event watchers may still hold.
 
 oro_store_reset :-
     with_mutex(oro_write,
-               ( rdf_reset_db,
+               ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
                  retractall(model_graph(_, _, _)),
                  retractall(model_alias(_, _)),

@@ -1,0 +1,225 @@
+:- module(oro_memory,
+          [ oro_memory_profile/2,       % +Name, -Profile
+            oro_memory_lifetime/2,      % +Profile, -Milliseconds
+            oro_memory_remember/3,      % +Model, +Profile, +Triples
+            oro_memory_reset/0,
+            oro_memory_deadlines/2,     % +Model, -Deadlines
+            oro_memory_sync/0
+          ]).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(error)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(heaps)).
+:- use_module(library(settings)).
+:- use_module(library(debug)).
+:- use_module(oro_store).
+
+/** <module> Memory profiles: facts that fade
+
+A fact added with the `shortterm` profile lives 10 time units, with
+`episodic` 300; `longterm` (also `default`) facts are never forgotten.
+One unit is the `time_base` setting (1000 ms; `--time-base`).
+
+Each profile is a graph of its own in each model (oro_store), so a
+fact lives as long as any of its assertions: re-adding a long-term fact
+as short-term changes nothing, re-adding a short-term fact refreshes its
+deadline, and a fact added both as short-term and episodic stays until
+the later deadline.  Only the deadline of each (model, profile, fact)
+is kept here; nothing is reified in the store.
+
+A scheduler thread owns a heap of deadlines and sleeps until the next
+one (no polling).  When deadlines pass it removes the due facts of a
+model and profile in one transaction: forgetting is a change like any
+other, seen by the reasoner and by event watchers.  A deadline is never
+acted on before it is reached; at the default time base a fact is gone
+a few milliseconds after.
+*/
+
+:- setting(time_base, positive_integer, 1000,
+           'Length of one memory time unit, in milliseconds').
+
+:- dynamic
+    deadline/6.                     % Model, Profile, S, P, O, DeadlineMs
+
+%!  oro_memory_profile(+Name, -Profile) is det.
+%
+%   Profile (`longterm`, `shortterm` or `episodic`) named by Name, in
+%   any case; `default` and unknown names are `longterm` (ORO-SPEC §9).
+
+oro_memory_profile(Name, Profile) :-
+    must_be(text, Name),
+    atom_string(Atom0, Name),
+    downcase_atom(Atom0, Atom),
+    (   memberchk(Atom, [shortterm, episodic])
+    ->  Profile = Atom
+    ;   Profile = longterm
+    ).
+
+%!  oro_memory_lifetime(+Profile, -Milliseconds) is semidet.
+%
+%   How long a fact of Profile lives; fails for `longterm`.
+
+oro_memory_lifetime(Profile, Ms) :-
+    profile_units(Profile, Units),
+    setting(time_base, Base),
+    Ms is Units * Base.
+
+profile_units(shortterm, 10).
+profile_units(episodic, 300).
+
+%!  oro_memory_remember(+Model, +Profile, +Triples) is det.
+%
+%   Start (or restart) the lifetime in Profile of the Triples that were
+%   just asserted in the Profile graph of Model.  Long-term triples and
+%   triples that were not stored in that graph (they live forever) are
+%   ignored.
+
+oro_memory_remember(Model, Profile, Triples) :-
+    (   oro_memory_lifetime(Profile, Lifetime)
+    ->  get_time(Now),
+        Deadline is ceiling(Now * 1000) + Lifetime,
+        oro_graph(Model, profile(Profile), Graph),
+        findall(deadline(Model, Profile, S, P, O, Deadline),
+                ( member(rdf(S, P, O), Triples),
+                  rdf(S, P, O, Graph)
+                ),
+                Entries),
+        (   Entries == []
+        ->  true
+        ;   with_mutex(oro_memory,
+                       forall(member(E, Entries), set_deadline(E))),
+            scheduler_send(schedule(Deadline, Model, Profile))
+        )
+    ;   true
+    ).
+
+set_deadline(deadline(Model, Profile, S, P, O, Deadline)) :-
+    retractall(deadline(Model, Profile, S, P, O, _)),
+    assertz(deadline(Model, Profile, S, P, O, Deadline)).
+
+%!  oro_memory_deadlines(+Model, -Deadlines) is det.
+%
+%   Deadlines are the pending Deadline-rdf(S,P,O)-Profile of Model, in
+%   milliseconds since the epoch, earliest first.
+
+oro_memory_deadlines(Model, Deadlines) :-
+    findall(D-rdf(S, P, O)-Profile, deadline(Model, Profile, S, P, O, D),
+            Deadlines0),
+    keysort(Deadlines0, Deadlines).
+
+%!  oro_memory_reset is det.
+%
+%   Forget every deadline (reset).
+
+oro_memory_reset :-
+    with_mutex(oro_memory, retractall(deadline(_, _, _, _, _, _))),
+    scheduler_call(reset).
+
+%!  oro_memory_sync is det.
+%
+%   Wait until the scheduler has handled every deadline already due.
+
+oro_memory_sync :-
+    scheduler_call(sync).
+
+		 /*******************************
+		 *           SCHEDULER          *
+		 *******************************/
+
+%   The scheduler's heap holds Deadline-(Model-Profile) entries, one per
+%   batch of facts added together: when one is due, every fact of that
+%   model and profile whose deadline has passed is forgotten.
+
+scheduler_send(Message) :-
+    ensure_scheduler,
+    thread_send_message(oro_memory_queue, Message).
+
+scheduler_call(Request) :-
+    ensure_scheduler,
+    thread_self(Me),
+    gensym(oro_memory_reply_, Tag),
+    thread_send_message(oro_memory_queue, call(Request, Me, Tag)),
+    thread_get_message(reply(Tag, done)).
+
+ensure_scheduler :-
+    (   catch(thread_property(oro_memory, status(running)), _, fail)
+    ->  true
+    ;   with_mutex(oro_memory,
+                   (   catch(thread_property(oro_memory, status(running)),
+                             _, fail)
+                   ->  true
+                   ;   (   catch(message_queue_property(oro_memory_queue,
+                                                        size(_)), _, fail)
+                       ->  true
+                       ;   message_queue_create(_, [alias(oro_memory_queue)])
+                       ),
+                       thread_create(scheduler, _, [alias(oro_memory)])
+                   ))
+    ).
+
+scheduler :-
+    empty_heap(Heap),
+    scheduler(Heap).
+
+scheduler(Heap0) :-
+    next_timeout(Heap0, Options),
+    (   thread_get_message(oro_memory_queue, Message, Options)
+    ->  catch(handle(Message, Heap0, Heap1), E,
+              ( print_message(error, E), Heap1 = Heap0 ))
+    ;   Heap1 = Heap0
+    ),
+    catch(expire_due(Heap1, Heap), E2,
+          ( print_message(error, E2), Heap = Heap1 )),
+    scheduler(Heap).
+
+next_timeout(Heap, Options) :-
+    (   min_of_heap(Heap, Deadline, _)
+    ->  get_time(Now),
+        Wait is max(0, (Deadline - Now * 1000) / 1000),
+        Options = [timeout(Wait)]
+    ;   Options = []
+    ).
+
+handle(schedule(Deadline, Model, Profile), Heap0, Heap) :-
+    add_to_heap(Heap0, Deadline, Model-Profile, Heap).
+handle(call(reset, Thread, Tag), _, Heap) :-
+    empty_heap(Heap),
+    thread_send_message(Thread, reply(Tag, done)).
+handle(call(sync, Thread, Tag), Heap0, Heap) :-
+    expire_due(Heap0, Heap),
+    thread_send_message(Thread, reply(Tag, done)).
+
+expire_due(Heap0, Heap) :-
+    get_time(NowS),
+    Now is floor(NowS * 1000),
+    due(Heap0, Now, Keys0, Heap),
+    sort(Keys0, Keys),
+    forall(member(Model-Profile, Keys),
+           forget(Model, Profile, Now)).
+
+due(Heap0, Now, [Key|Keys], Heap) :-
+    min_of_heap(Heap0, Deadline, Key),
+    Deadline =< Now,
+    !,
+    get_from_heap(Heap0, _, _, Heap1),
+    due(Heap1, Now, Keys, Heap).
+due(Heap, _, [], Heap).
+
+forget(Model, Profile, Now) :-
+    with_mutex(oro_memory,
+               findall(rdf(S, P, O),
+                       ( deadline(Model, Profile, S, P, O, D),
+                         D =< Now,
+                         retract(deadline(Model, Profile, S, P, O, D))
+                       ),
+                       Triples)),
+    (   Triples == []
+    ->  true
+    ;   oro_model(Model)
+    ->  length(Triples, N),
+        debug(oro(memory), 'Forgetting ~D ~w facts of ~q', [N, Profile, Model]),
+        oro_store_write(forget(Model, Profile),
+                        oro_store_forget(Model, Profile, Triples))
+    ;   true
+    ).
