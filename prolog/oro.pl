@@ -49,6 +49,11 @@
             oro_clear_event/2,          % +Model, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
+            % consistency
+            oro_consistent/1,           % +Model
+            oro_conflict/2,             % +Model, -Conflict
+            oro_consistent_with/2,      % +Model, +Statements
+            oro_safe_add/4,             % +Model, +Statements, +Profile, -Accepted
             % agents and memory
             oro_agents/1,               % -Names
             oro_create_agent/2,         % +Name, +Individual
@@ -66,6 +71,7 @@
 :- use_module(oro/oro_events).
 :- use_module(oro/oro_agents).
 :- use_module(oro/oro_memory).
+:- use_module(oro/oro_consistency).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

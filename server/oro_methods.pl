@@ -324,11 +324,8 @@ m_clear(Patterns, void) :-
 m_update(Statements, void) :-
     oro_update(myself, Statements).
 
-m_check(Patterns, bool(Bool)) :-
-    (   oro_check(myself, Patterns)
-    ->  Bool = true
-    ;   Bool = false
-    ).
+m_check(Patterns, Bool) :-
+    truth(oro_check(myself, Patterns), Bool).
 
 m_find(Var, Patterns, Values) :-
     find_values(myself, Var, Patterns, Values).
@@ -517,11 +514,26 @@ method(addForAgent(string, set, string), agents,
        "Adds statements to an agent's model with a memory profile.",
        m_add_for_agent).
 method(safeAddForAgent(string, set), agents,
-       "Adds statements to an agent's model (no consistency check yet: always true).",
+       "Adds the statements that keep an agent's model consistent; false if one was rejected.",
        m_safe_add_for_agent).
 method(safeAddForAgent(string, set, string), agents,
-       "Adds statements to an agent's model with a memory profile (no consistency check yet: always true).",
+       "Adds, with a memory profile, the statements that keep an agent's model consistent; false if one was rejected.",
        m_safe_add_for_agent).
+method(checkConsistencyForAgent(string), agents,
+       "Tells whether an agent's model is consistent.",
+       m_check_consistency_for_agent).
+method(safeAdd(set), base,
+       "Adds the statements that keep the robot's model consistent; false if one was rejected.",
+       m_safe_add).
+method(safeAdd(set, string), base,
+       "Adds, with a memory profile, the statements that keep the model consistent; false if one was rejected.",
+       m_safe_add).
+method(checkConsistency, base,
+       "Tells whether the robot's model is consistent.",
+       m_check_consistency).
+method(checkConsistency(set), base,
+       "Tells whether the robot's model would be consistent with the statements (nothing is kept).",
+       m_check_consistency).
 method(removeForAgent(string, set), agents,
        "Removes statements (or statements matching patterns) from an agent's model.",
        m_clear_for_agent).
@@ -570,10 +582,34 @@ m_add_for_agent(Agent, Statements, Profile, void) :-
     agent_model(Agent, Model),
     oro_add(Model, Statements, Profile).
 
-m_safe_add_for_agent(Agent, Statements, bool(true)) :-
-    m_add_for_agent(Agent, Statements, void).
-m_safe_add_for_agent(Agent, Statements, Profile, bool(true)) :-
-    m_add_for_agent(Agent, Statements, Profile, void).
+m_safe_add_for_agent(Agent, Statements, bool(Accepted)) :-
+    agent_model(Agent, Model),
+    oro_safe_add(Model, Statements, longterm, Accepted).
+m_safe_add_for_agent(Agent, Statements, Profile, bool(Accepted)) :-
+    agent_model(Agent, Model),
+    oro_safe_add(Model, Statements, Profile, Accepted).
+
+m_check_consistency_for_agent(Agent, Bool) :-
+    agent_model(Agent, Model),
+    truth(oro_consistent(Model), Bool).
+
+m_safe_add(Statements, bool(Accepted)) :-
+    oro_safe_add(myself, Statements, longterm, Accepted).
+m_safe_add(Statements, Profile, bool(Accepted)) :-
+    oro_safe_add(myself, Statements, Profile, Accepted).
+
+m_check_consistency(Bool) :-
+    truth(oro_consistent(myself), Bool).
+m_check_consistency(Statements, Bool) :-
+    truth(oro_consistent_with(myself, Statements), Bool).
+
+:- meta_predicate truth(0, -).
+
+truth(Goal, bool(Bool)) :-
+    (   call(Goal)
+    ->  Bool = true
+    ;   Bool = false
+    ).
 
 m_clear_for_agent(Agent, Patterns, void) :-
     agent_model(Agent, Model),

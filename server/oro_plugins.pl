@@ -64,7 +64,9 @@ ORO errors exactly like the built-in ones.
   - A file that cannot be loaded (missing, not a module file, syntax
     error, an exception or failure in a directive) is reported with
     print_message/2 and unloaded again: none of its methods is
-    registered.
+    registered.  So is a file that is loaded already as an ordinary
+    Prolog file (a library, a module of oro): unloading it later would
+    break its users.
   - A declaration whose name (compared case-insensitively, as the
     dispatcher does) and arity are already declared -- by the built-in
     methods, another plugin or the same file -- is reported and
@@ -78,7 +80,8 @@ oro_unload_plugins/0 remove what plugins declared.
 */
 
 :- dynamic
-    plugin/3.                   % Path, Module, Signatures
+    plugin/3,                   % Path, Module, Signatures
+    plugin_file/1.              % Path: loaded by us (maybe unloaded since)
 
 :- thread_local
     loading/1,                  % Path: oro_load_plugin/1 runs in this thread
@@ -117,10 +120,11 @@ oro_load_plugins(Files) :-
 %   module documentation).  Problems are reported with print_message/2
 %   and never raised: a plugin that cannot be loaded registers
 %   nothing, a clashing or malformed declaration is dropped.  Loading a
-%   plugin that is loaded already loads it again.
+%   plugin that is loaded already loads it again; a file loaded
+%   otherwise (a library, a module of oro) is refused.
 
 oro_load_plugin(File) :-
-    must_be(atomic, File),
+    must_be(ground, File),
     with_mutex(oro_plugins, load_plugin(File)).
 
 load_plugin(File) :-
@@ -129,12 +133,22 @@ load_plugin(File) :-
                              access(read),
                              file_errors(fail)
                            ])
-    ->  unload_plugin(Path),
-        load_plugin_file(Path)
+    ->  (   plugin(Path, _, _)
+        ->  unload_plugin(Path),
+            load_plugin_file(Path)
+        ;   source_file(Path),
+            \+ plugin_file(Path)
+        ->  print_message(error, oro_plugin(not_a_plugin(Path)))
+        ;   load_plugin_file(Path)
+        )
     ;   print_message(error, oro_plugin(not_found(File)))
     ).
 
 load_plugin_file(Path) :-
+    (   plugin_file(Path)
+    ->  true
+    ;   assertz(plugin_file(Path))
+    ),
     setup_call_cleanup(
         start_loading(Path, HookRef),
         ( catch(load_files(Path, [must_be_module(true), if(true)]),
@@ -225,7 +239,7 @@ check_implementation(Path, Sig, Impl) :-
 %   nothing if File is not a loaded plugin.
 
 oro_unload_plugin(File) :-
-    must_be(atomic, File),
+    must_be(ground, File),
     (   absolute_file_name(File, Path,
                            [ file_type(prolog),
                              access(read),
@@ -383,14 +397,22 @@ clash(Key, File, Existing, Owner) :-
     !,
     owner(Source, Owner).
 
-owner(Source, built_in) :-
-    module_property(oro_methods, file(Source)),
-    !.
 owner(Source, Owner) :-
     (   plugin(Source, _, _)
     ->  Owner = plugin(Source)
+    ;   built_in_file(Source)
+    ->  Owner = built_in
     ;   Owner = file(Source)
     ).
+
+%   The built-in methods are declared in server/ (oro_methods.pl and
+%   its companions).
+
+built_in_file(Source) :-
+    atom(Source),
+    module_property(oro_methods, file(MethodsFile)),
+    file_directory_name(MethodsFile, Dir),
+    file_directory_name(Source, Dir).
 
 		 /*******************************
 		 *           MESSAGES           *
@@ -406,6 +428,9 @@ message(loaded(File, Signatures)) -->
     loaded_methods(Signatures).
 message(not_found(File)) -->
     [ 'oro: plugin ~w not loaded: no such readable Prolog file'-[File] ].
+message(not_a_plugin(File)) -->
+    [ 'oro: plugin ~w not loaded: it is loaded already, as an ordinary \c
+       Prolog file'-[File] ].
 message(load_failed(File, Problems)) -->
     [ 'oro: plugin ~w not loaded (none of its methods is available):'-[File] ],
     problems(Problems).

@@ -958,8 +958,40 @@ float_text(X, Text) :-
 
 escape_string(String, Escaped) :-
     replace_all(String,
-                [ "\\"-"\\\\", "\""-"\\\"", "\n"-"\\n", "\r"-"\\r" ],
-                Escaped).
+                [ "\\"-"\\\\", "\""-"\\\"", "\n"-"\\n", "\r"-"\\r",
+                  "\t"-"\\t" ],
+                Escaped0),
+    escape_controls(Escaped0, Escaped).
+
+%   Other control characters (NUL included) become \uXXXX, so every
+%   value stays valid JSON and a valid Python literal.  One C-level scan
+%   finds out whether there is any.
+
+escape_controls(String, Escaped) :-
+    (   has_control(String)
+    ->  string_codes(String, Codes),
+        foldl(control_code, Codes, Parts, []),
+        atomics_to_string(Parts, Escaped)
+    ;   Escaped = String
+    ).
+
+has_control(String) :-
+    controls(Controls),
+    (   split_string(String, Controls, "", [_, _|_])
+    ->  true
+    ;   sub_string(String, _, _, _, "\u0000")
+    ->  true
+    ).
+
+controls(Controls) :-
+    numlist(1, 31, Codes),
+    string_codes(Controls, Codes).
+
+control_code(Code, [Part|T], T) :-
+    (   Code < 32
+    ->  format(string(Part), "\\u~|~`0t~16r~4+", [Code])
+    ;   char_code(Part, Code)
+    ).
 
 escape_quotes(String, Escaped) :-
     replace_all(String, [ "\\"-"\\\\", "\""-"\\\"" ], Escaped).

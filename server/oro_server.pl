@@ -13,6 +13,7 @@
 :- use_module('../prolog/oro').
 :- use_module(oro_protocol).
 :- use_module(oro_methods).
+:- use_module(oro_methods_categorization).
 :- use_module(oro_plugins).
 
 /** <module> The ORO socket server
@@ -120,11 +121,13 @@ oro_server_start(Options, Server) :-
     option(commonsense(CommonSense), Options, true),
     option(robot_id(RobotId), Options, ''),
     option(save_dir(SaveDir), Options, '.'),
+    option(time_base(TimeBase), Options, 1000),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ commonsense(CommonSense),
                ontologies(Files),
                robot_id(RobotId),
-               save_dir(SaveDir)
+               save_dir(SaveDir),
+               time_base(TimeBase)
              ]),
     findall(P, member(plugin(P), Options), Plugins),
     oro_load_plugins(Plugins),

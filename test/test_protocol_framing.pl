@@ -172,8 +172,10 @@ test(string_backslash_escaped, S == "\"a\\\\b\"") :-
     oro_encode_value(string("a\\b"), S).
 test(string_newlines_escaped, S == "\"a\\nb\\rc\"") :-
     oro_encode_value(string("a\nb\rc"), S).
-test(string_nul_kept, S == "\"a\u0000b\"") :-
+test(string_nul_escaped, S == "\"a\\u0000b\"") :-
     oro_encode_value(string("a\u0000b"), S).
+test(string_controls_escaped, S == "\"a\\tb\\u001fc\"") :-
+    oro_encode_value(string("a\tb\u001fc"), S).
 test(string_unicode, S == "\"日本 😀\"") :-
     oro_encode_value(string("日本 😀"), S).
 test(multiline_string, S == "\"a\nb \\\"c\\\"\"") :-

@@ -15,6 +15,7 @@
 :- use_module(oro_events).
 :- use_module(oro_knowledge).
 :- use_module(oro_parse).
+:- use_module(oro_consistency).
 
 /** <module> Agent models: what other agents believe
 
@@ -128,7 +129,7 @@ oro_agents(Names) :-
 %   Apply Statements to the models a Policy dict selects (ORO's
 %   revise(), ORO-SPEC §6.1):
 %
-%     - method: `add`, `safe_add` (as `add`: no consistency check yet),
+%     - method: `add`, `safe_add`,
 %       `retract` or `update` (any case); `revision` and
 %       `safe_update` are not implemented;
 %     - models: a model name, a list of them (unknown names are
@@ -166,7 +167,7 @@ oro_revise(Statements, Policy) :-
 revise_model(add, Model, Statements, Profile) :-
     oro_add(Model, Statements, Profile).
 revise_model(safe_add, Model, Statements, Profile) :-
-    oro_add(Model, Statements, Profile).
+    oro_safe_add(Model, Statements, Profile, _).
 revise_model(retract, Model, Statements, _) :-
     oro_remove(Model, Statements).
 revise_model(update, Model, Statements, _) :-

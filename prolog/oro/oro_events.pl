@@ -369,12 +369,14 @@ oro_clear_event(Model0, Id0) :-
 %!  oro_watchers(+Model, -Watchers) is det.
 %
 %   Watchers of Model, as watcher(Id, Type, Trigger, Var, Patterns,
-%   Subscribers) terms, Subscribers being their number.
+%   Subscribers) terms, Subscribers being their number; oro's own
+%   (`internal`) watchers are not listed.
 
 oro_watchers(Model0, Watchers) :-
     oro_resolve_model(Model0, Model),
     findall(watcher(Id, Type, Trigger, Var, Patterns, N),
-            ( watcher(Id, Model, _, spec(Type, Trigger, Var, Patterns), _),
+            ( watcher(Id, Model, Registry, spec(Type, Trigger, Var, Patterns), _),
+              Registry \== internal,
               aggregate_all(count, subscription(Id, _), N)
             ),
             Watchers).
@@ -486,8 +488,9 @@ oro_subscribe(Model, Type, Trigger, Var, Patterns, Callback, Id) :-
 
 oro_unsubscribe(Id) :-
     must_be(atom, Id),
-    forall(with_mutex(oro_events, retract(callback_subscriber(Id, S))),
-           oro_subscriber_destroy(S)).
+    with_mutex(oro_events,
+               findall(S, retract(callback_subscriber(Id, S)), Subscribers)),
+    maplist(oro_subscriber_destroy, Subscribers).
 
 		 /*******************************
 		 *        WATCHER THREAD        *
