@@ -20,7 +20,7 @@
 
     swipl server/oro_server.pl [--port=N] [--host=ADDR] [--ontology=FILE]...
                                [--no-commonsense] [--robot-id=ID]
-                               [--time-base=MS] [--save-dir=DIR]
+                               [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
 
 An accept thread hands each connection to a worker of a bounded pool
 (`max_connections`); each worker reads requests with oro_protocol,
