@@ -364,17 +364,16 @@ property_signature(Model, X, P, Sig) :-
 %   the keys of Sig, as Values-Members.
 
 partition_blocks(Pairs, Partition) :-
-    findall(Keys-(Sig-X), ( member(Sig-X, Pairs),
+    findall(Keys-(X-Sig), ( member(Sig-X, Pairs),
                             pairs_keys(Sig, Keys)
                           ), Keyed0),
     msort(Keyed0, Keyed),
     group_pairs_by_key(Keyed, Groups),
     maplist(block, Groups, Partition).
 
-block(_-[Sig-X|More], Values-Members) :-
+block(_-[X-Sig|More], Values-[X|Xs]) :-
     pairs_values(Sig, Values),
-    pairs_values(More, Xs),
-    Members = [X|Xs].
+    pairs_keys(More, Xs).
 
 %   discrimination(+Model0, +Individuals, -Model, -Xs, -Total, -Best):
 %   §10.5 over the ordered set Xs of Individuals.  A profile is X-Props,

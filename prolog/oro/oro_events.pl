@@ -177,7 +177,11 @@ monitor_(update(_, P, O, G, _)) :-
 monitor_(_).
 
 note(Source, P, O) :-
-    watcher(_, _, _, _, _),                 % nobody watches: nothing to do
+    (   watcher(_, _, _, _, _)
+    ->  true
+    ;   flag(oro_events_pending, N, N),
+        N > 0
+    ),                                      % nobody watches: nothing to do
     !,
     source_graph(Source, G),
     graph_model(G, Model),
@@ -215,10 +219,38 @@ flush_changes :-
     ),
     (   Touched == []
     ->  true
-    ;   rdf_snapshot(Snapshot),
+    ;   (   Schema == true
+        ;   pending
+        ;   relevant(Touched)
+        )
+    ->  (   Schema == true
+        ->  flag(oro_events_pending, N, N+1)
+        ;   true
+        ),
+        rdf_snapshot(Snapshot),
         thread_send_message(oro_watcher_queue,
                             change(Snapshot, Touched, Schema))
+    ;   true
     ).
+
+%   A change that no watcher depends on is not sent at all.  The
+%   dependencies are those of the watchers the watcher thread knows, so
+%   while it has not yet processed a registration or a schema change
+%   (which may change dependencies) every change is sent: the counter
+%   oro_events_pending is raised, under the store's write lock, when one
+%   is queued and lowered by the watcher thread once it is done.
+
+pending :-
+    flag(oro_events_pending, N, N),
+    N > 0.
+
+relevant(Touched) :-
+    member(Model-P, Touched),
+    (   Model == '$all'
+    ;   watcher_dep(Model, any, _)
+    ;   watcher_dep(Model, P, _)
+    ),
+    !.
 
 		 /*******************************
 		 *         REGISTRATION         *
@@ -257,6 +289,7 @@ oro_register_event(Model0, Type0, Trigger0, Var0, Patterns, Subscriber, Id) :-
     gensym(oro_reply_, Tag),
     with_mutex(oro_write,
                ( rdf_snapshot(Snapshot),
+                 flag(oro_events_pending, N, N+1),
                  thread_send_message(oro_watcher_queue,
                                      call(register(Model, Registry, Spec, Triples,
                                                    Subscriber, Snapshot),
@@ -503,7 +536,12 @@ watcher_loop :-
 
 handle(change(Snapshot, Touched, Schema)) :-
     call_cleanup(process_change(Snapshot, Touched, Schema),
-                 rdf_delete_snapshot(Snapshot)),
+                 ( rdf_delete_snapshot(Snapshot),
+                   (   Schema == true
+                   ->  flag(oro_events_pending, N, N-1)
+                   ;   true
+                   )
+                 )),
     run_direct_deliveries.
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
@@ -530,7 +568,9 @@ request(reset, true) :-
 request(register(Model, Registry, Spec, Triples, Subscriber, Snapshot), id(Id)) :-
     call_cleanup(register(Model, Registry, Spec, Triples, Subscriber,
                           Snapshot, Id),
-                 rdf_delete_snapshot(Snapshot)).
+                 ( rdf_delete_snapshot(Snapshot),
+                   flag(oro_events_pending, N, N-1)
+                 )).
 request(clear(Model, Registry), true) :-
     forall(watcher(Id, Model, Registry, _, _), drop_watcher(Id)).
 request(clear_one(Model, Id), true) :-

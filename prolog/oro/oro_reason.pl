@@ -926,20 +926,8 @@ instance_predicate(Q) :-
     ;   rdf_equal(Q, owl:differentFrom)
     ).
 
-meta_class(owl:'Class').
-meta_class(rdfs:'Class').
-meta_class(rdf:'Property').
-meta_class(owl:'ObjectProperty').
-meta_class(owl:'DatatypeProperty').
-meta_class(owl:'AnnotationProperty').
-meta_class(owl:'TransitiveProperty').
-meta_class(owl:'SymmetricProperty').
-meta_class(owl:'FunctionalProperty').
-meta_class(owl:'InverseFunctionalProperty').
-meta_class(owl:'AsymmetricProperty').
-meta_class(owl:'ReflexiveProperty').
-meta_class(owl:'IrreflexiveProperty').
-meta_class(owl:'Restriction').
+meta_class(C) :-
+    oro_schema_class(C).
 meta_class(owl:'Ontology').
 meta_class(owl:'AllDifferent').
 meta_class(owl:'AllDisjointClasses').

@@ -14,6 +14,7 @@
             oro_store_write/2,          % +Action, :Goal
             oro_schema_generation/1,    % -Generation
             oro_schema_triple/2,        % +P, +O
+            oro_schema_class/1,         % ?Class
             oro_load_ontology/1,        % +File
             oro_ontology_graph/1,       % ?Graph
             oro_wipe_models/0,
@@ -326,13 +327,13 @@ note_schema_change(P, O) :-
 :- rdf_meta
     oro_schema_triple(r, o),
     schema_predicate(r),
-    meta_class(r).
+    oro_schema_class(r).
 
 oro_schema_triple(P, _) :-
     schema_predicate(P),
     !.
 oro_schema_triple(rdf:type, O) :-
-    meta_class(O).
+    oro_schema_class(O).
 
 schema_predicate(rdfs:subClassOf).
 schema_predicate(rdfs:subPropertyOf).
@@ -355,20 +356,25 @@ schema_predicate(owl:propertyDisjointWith).
 schema_predicate(rdf:first).
 schema_predicate(rdf:rest).
 
-meta_class(owl:'Class').
-meta_class(rdfs:'Class').
-meta_class(rdf:'Property').
-meta_class(owl:'ObjectProperty').
-meta_class(owl:'DatatypeProperty').
-meta_class(owl:'AnnotationProperty').
-meta_class(owl:'TransitiveProperty').
-meta_class(owl:'SymmetricProperty').
-meta_class(owl:'FunctionalProperty').
-meta_class(owl:'InverseFunctionalProperty').
-meta_class(owl:'AsymmetricProperty').
-meta_class(owl:'ReflexiveProperty').
-meta_class(owl:'IrreflexiveProperty').
-meta_class(owl:'Restriction').
+%!  oro_schema_class(?Class) is nondet.
+%
+%   Class is a meta-class whose instances define the schema: classes,
+%   properties and their characteristics, restrictions.
+
+oro_schema_class(owl:'Class').
+oro_schema_class(rdfs:'Class').
+oro_schema_class(rdf:'Property').
+oro_schema_class(owl:'ObjectProperty').
+oro_schema_class(owl:'DatatypeProperty').
+oro_schema_class(owl:'AnnotationProperty').
+oro_schema_class(owl:'TransitiveProperty').
+oro_schema_class(owl:'SymmetricProperty').
+oro_schema_class(owl:'FunctionalProperty').
+oro_schema_class(owl:'InverseFunctionalProperty').
+oro_schema_class(owl:'AsymmetricProperty').
+oro_schema_class(owl:'ReflexiveProperty').
+oro_schema_class(owl:'IrreflexiveProperty').
+oro_schema_class(owl:'Restriction').
 
 %!  oro_load_ontology(+File) is det.
 %
