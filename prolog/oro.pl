@@ -49,6 +49,13 @@
             oro_clear_event/2,          % +Model, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
+            % categorization
+            oro_similarities/4,         % +Model, +A, +B, -Similarities
+            oro_differences/4,          % +Model, +A, +B, -Differences
+            oro_common_ancestors/4,     % +Model, +A, +B, -Classes
+            oro_discriminate/4,         % +Model, +Individuals, -Total, -Best
+            oro_discriminants/3,        % +Model, +Individuals, -Discriminants
+            oro_partition/4,            % +Model, +Individuals, +Property, -Partition
             % consistency
             oro_consistent/1,           % +Model
             oro_conflict/2,             % +Model, -Conflict
@@ -72,6 +79,7 @@
 :- use_module(oro/oro_agents).
 :- use_module(oro/oro_memory).
 :- use_module(oro/oro_consistency).
+:- use_module(oro/oro_categorize).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

@@ -61,6 +61,7 @@ oro_exception(event_registration, 'EventRegistrationException').
 oro_exception(event_not_found, 'EventNotFoundException').
 oro_exception(not_implemented, 'NotImplementedException').
 oro_exception(invalid_policy, 'InvalidPolicyException').
+oro_exception(not_comparable, 'NotComparableException').
 
 %   error_table(+Formal, -Exception, -Format, -Args)
 
@@ -157,5 +158,16 @@ error_table(domain_error(oro_find_variables, _), not_implemented,
             'find can be executed only on a single agent model', []).
 error_table(domain_error(oro_find_agents, _), not_implemented,
             'find can be executed only on a single agent model', []).
+error_table(existence_error(concept, IRI), not_found,
+            'Concept ~w doesn\'t exist in the ontology.', [Name]) :-
+    oro_iri_name(IRI, Name).
+error_table(domain_error(oro_comparable, kinds(KindA, KindB)), not_comparable,
+            'Can not compare resources of different kind (a ~w and a ~w \c
+             were provided).', [A, B]) :-
+    upcase_atom(KindA, A),
+    upcase_atom(KindB, B).
+error_table(domain_error(oro_comparable, not_individuals), not_comparable,
+            'Only the comparison between instances (individuals) is \c
+             currently implemented', []).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

@@ -37,11 +37,23 @@ inference closure of a model, with terms a planner can use directly:
     planner can ask "which colour?" and keep the group the answer
     names; oro_partition/4 gives the partition by any property.
 
-    ?- oro_add(myself, ["capucin rdf:type Monkey", "capucin eats grass",
-                        "gorilla eats apple"]),
-       oro_discriminants(myself, [capucin, gorilla], Ds).
-    Ds = [discriminant(oro:eats, [[oro:apple]-[oro:gorilla],
-                                  [oro:grass]-[oro:capucin]])].
+The seed's example, over the test ontology: which thing does the
+human want?
+
+    ?- oro_add(myself, ["plant1 rdf:type Plant", "plant1 hasColor green",
+                        "animal1 rdf:type Animal", "animal1 eats banana",
+                        "animal2 rdf:type Animal", "animal2 eats grass",
+                        "animal2 hasColor blue",
+                        "animal3 rdf:type Animal", "animal3 hasColor red"]),
+       oro_discriminants(myself, [plant1, animal1, animal2, animal3], Ds).
+    Ds = [discriminant(oro:hasColor, [ []-[oro:animal1],
+                                       [oro:blue]-[oro:animal2],
+                                       [oro:green]-[oro:plant1],
+                                       [oro:red]-[oro:animal3] ])].
+
+The colour is the best question; it does not single out every
+candidate (animal1 has no known colour), so oro_discriminate/4 answers
+`Total = []`, `Best = [oro:hasColor]`.
 
 The algorithms are those of oro-server 0.8.2 (§10), made deterministic
 (ORO-SPEC §16):
@@ -396,9 +408,14 @@ discrimination(Model0, Individuals, Model, Xs, Total, Best) :-
 %   profile(+Model, +X, -X-Props): steps 1 to 3.
 
 profile(Model, X, X-Props) :-
+    findall(P-O, oro_holds(Model, X, P, O), Facts),
+    rdf_equal(rdf:type, Type),
+    findall(C, member(Type-C, Facts), Types0),
+    named_classes(Types0, Types),
+    most_specific(Model, Types, Direct),
     rdf_equal(owl:'Nothing', Nothing),
     findall(P-(K-O),
-            ( oro_holds(Model, X, P, O),
+            ( member(P-O, Facts),
               \+ excluded_predicate(P),
               O \== Nothing,
               \+ rdf_is_bnode(O),
@@ -407,8 +424,7 @@ profile(Model, X, X-Props) :-
             Triples),
     grouped_values(Triples, Props0),
     prune_values(Model, Props0, Props1),
-    rdf_equal(rdf:type, Type),
-    type_signature(Model, X, TypeSig),
+    findall(r(C)-C, member(C, Direct), TypeSig),
     ord_union(Props1, [Type-TypeSig], Props).
 
 excluded_predicate(rdf:type).
@@ -419,11 +435,28 @@ excluded_predicate(owl:bottomDataProperty).
 excluded_predicate(rdfs:label).
 excluded_predicate(rdfs:comment).
 
-%   The direct classes of X: the value set of rdf:type.
+%   type_signature(+Model, +X, -Sig): the direct classes of X, the
+%   value set of rdf:type.
 
 type_signature(Model, X, Sig) :-
     oro_direct_classes_of(Model, X, Classes),
     findall(r(C)-C, member(C, Classes), Sig).
+
+%   named_classes(+Classes0, -Classes): ordered, without blank nodes,
+%   owl:Nothing and owl:NamedIndividual (as oro_classes_of/3).
+
+named_classes(Classes0, Classes) :-
+    rdf_equal(owl:'Nothing', Nothing),
+    rdf_equal(owl:'NamedIndividual', Named),
+    exclude(unnamed_class(Nothing, Named), Classes0, Classes1),
+    sort(Classes1, Classes).
+
+unnamed_class(_, _, C) :-
+    rdf_is_bnode(C),
+    !.
+unnamed_class(Nothing, _, Nothing) :-
+    !.
+unnamed_class(_, Named, Named).
 
 %   Step 2: a value carried by several properties of X is removed from
 %   every property strictly above another one carrying it.

@@ -21,8 +21,9 @@
 The eight taxonomy questions of ORO over the inference closure of a
 model.  Each answers an ordered set of named IRIs: blank nodes
 (anonymous classes) and owl:Nothing are left out, and a class is never
-listed among its own super- or sub-classes.  Classes equivalent to
-each other are at the same level: neither is "below" the other.
+listed among its own super- or sub-classes, nor are the classes
+equivalent to it (they are the same class; oro_resource_details/4
+lists them as `same_as`).
 
 Errors: asking for the classes of something that is a class, or the
 sub-classes or instances of something that is not a class, raises
@@ -46,7 +47,9 @@ existence_error(class, X) or existence_error(individual, X).
 
 oro_superclasses(Model, Class, Supers) :-
     must_be_class(Model, Class),
-    findall(S, ( oro_subclass(Model, Class, S), S \== Class ), Supers0),
+    findall(S, ( oro_subclass(Model, Class, S),
+                 \+ oro_subclass(Model, S, Class)     % not Class, no equivalent
+               ), Supers0),
     named_set(Supers0, Supers).
 
 %!  oro_direct_superclasses(+Model, +Class, -Supers) is det.
@@ -63,7 +66,9 @@ oro_direct_superclasses(Model, Class, Supers) :-
 
 oro_subclasses(Model, Class, Subs) :-
     must_be_class(Model, Class),
-    findall(S, ( oro_subclass(Model, S, Class), S \== Class ), Subs0),
+    findall(S, ( oro_subclass(Model, S, Class),
+                 \+ oro_subclass(Model, Class, S)     % not Class, no equivalent
+               ), Subs0),
     named_set(Subs0, Subs).
 
 %!  oro_direct_subclasses(+Model, +Class, -Subs) is det.
