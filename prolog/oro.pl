@@ -42,6 +42,7 @@
             oro_subscribe/7,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Id
             oro_unsubscribe/1,          % +Id
             oro_register_event/7,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, -Id
+            oro_register_event/8,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, +Registry, -Id
             oro_subscriber_create/3,    % :Deliver, -Subscriber, +Options
             oro_subscriber_destroy/1,   % +Subscriber
             oro_clear_events/1,         % +Model

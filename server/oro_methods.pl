@@ -718,8 +718,9 @@ m_register_event_for_agent(Context, Agent, Type, Trigger, Var, Patterns, raw(Id)
     register_event(Context, agent, Model, Type, Trigger, Var, Patterns, Id).
 
 register_event(Context, Registry, Model, Type, Trigger, Var, Patterns, Id) :-
-    connection_subscriber(Context, Registry, Subscriber),
-    oro_register_event(Model, Type, Trigger, Var, Patterns, Subscriber, Id).
+    connection_subscriber(Context, Subscriber),
+    oro_register_event(Model, Type, Trigger, Var, Patterns, Subscriber,
+                       Registry, Id).
 
 m_clear_events(void) :-
     oro_clear_events(myself).
@@ -739,24 +740,24 @@ agent_model(Agent, Model) :-
     atom_string(Name, Agent),
     oro_resolve_model(Name, Model).
 
-%   The subscriber of a connection, one per registry, made on first use:
-%   its events are written on the connection under the connection's
-%   mutex; if it falls too far behind, the connection is closed.
+%   The subscriber of a connection, made on first use: one for all its
+%   watchers, so its events keep their commit order; they are written
+%   on the connection under the connection's mutex.  If it falls too
+%   far behind, the connection is closed.
 
-connection_subscriber(Context, Registry, Subscriber) :-
+connection_subscriber(Context, Subscriber) :-
     Slot = Context.subscribers,
     arg(1, Slot, Subscribers),
-    (   memberchk(Registry-Subscriber0, Subscribers)
+    (   Subscribers = [Subscriber0]
     ->  Subscriber = Subscriber0
     ;   Out = Context.out,
         Mutex = Context.mutex,
         Thread = Context.thread,
         oro_subscriber_create(deliver_event(Out, Mutex), Subscriber,
-                              [ registry(Registry),
-                                on_overflow(thread_signal(Thread,
+                              [ on_overflow(thread_signal(Thread,
                                                           throw(oro_events_overflow)))
                               ]),
-        nb_setarg(1, Slot, [Registry-Subscriber|Subscribers])
+        nb_setarg(1, Slot, [Subscriber])
     ).
 
 deliver_event(Out, Mutex, Id, Content) :-
@@ -775,7 +776,7 @@ event_content(Values, list(Texts)) :-
 
 oro_connection_closed(Context) :-
     arg(1, Context.subscribers, Subscribers),
-    forall(member(_-Subscriber, Subscribers),
+    forall(member(Subscriber, Subscribers),
            catch(oro_subscriber_destroy(Subscriber), E,
                  print_message(warning, E))).
 

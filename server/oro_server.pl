@@ -196,6 +196,7 @@ refuse_connection(Client, Error) :-
           _, true).
 
 serve_connection(Server, Client, Peer) :-
+    tcp_setopt(Client, nodelay),            % events right after replies
     setup_call_cleanup(
         tcp_open_socket(Client, Pair),
         serve_stream(Server, Pair, Peer),

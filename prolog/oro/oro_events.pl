@@ -2,6 +2,7 @@
           [ oro_events_start/0,
             oro_events_reset/0,
             oro_register_event/7,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, -Id
+            oro_register_event/8,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, +Registry, -Id
             oro_clear_events/1,         % +Model
             oro_clear_events/2,         % +Model, +Registry
             oro_clear_event/2,          % +Model, +Id
@@ -275,13 +276,28 @@ relevant(Touched) :-
 %          watcher without a variable.
 %   @error oro_event_registration(Message) for a bad pattern.
 
-oro_register_event(Model0, Type0, Trigger0, Var0, Patterns, Subscriber, Id) :-
+oro_register_event(Model, Type, Trigger, Var, Patterns, Subscriber, Id) :-
+    subscriber_registry(Subscriber, Registry),
+    oro_register_event(Model, Type, Trigger, Var, Patterns, Subscriber,
+                       Registry, Id).
+
+%!  oro_register_event(+Model, +Type, +Trigger, +Var, +Patterns,
+%!                     +Subscriber, +Registry, -Id) is det.
+%
+%   As oro_register_event/7, the watcher going to Registry (`plain`,
+%   `agent` or `internal`) whatever the subscriber's default: one
+%   subscriber (one connection) may register in several registries and
+%   still receives all its events in commit order.
+
+oro_register_event(Model0, Type0, Trigger0, Var0, Patterns, Subscriber,
+                   Registry, Id) :-
     oro_resolve_model(Model0, Model),
     event_type(Type0, Type),
     event_trigger(Trigger0, Trigger),
     must_be(list, Patterns),
+    must_be(oneof([plain, agent, internal]), Registry),
     event_var(Type, Var0, Var),
-    subscriber_registry(Subscriber, Registry),
+    subscriber_registry(Subscriber, _),
     watcher_triples(Type, Model, Var, Patterns, Triples),
     Spec = spec(Type, Trigger, Var, Patterns),
     oro_events_start,

@@ -1,0 +1,1582 @@
+:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
+:- use_module(library(plunit)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(error)).
+:- use_module(library(pairs)).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(oro)).
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/oro_test_client', Client),
+   use_module(Client),
+   atom_concat(Dir, '/../server/oro_server', Server),
+   use_module(Server).
+
+/*  Tests of events (ORO-SPEC §1.4, §7, vectors §13.10, per-agent events
+    of §13.11 and the seed session §13.13), over real sockets on
+    127.0.0.1 and through the Prolog API (oro_subscribe/7).  Unlike ORO
+    0.8.2 (§1.4 [QUIRK]), a watcher whose only subscribers have
+    disconnected is dropped.
+
+    Most tests use two connections: A registers, B makes the changes, A
+    receives the events.  That nothing (more) fired is never asserted
+    with a sleep: A also subscribes to a *sentinel* watcher, registered
+    after the watchers under test,
+
+        NEW_INSTANCE ON_TRUE mark [?mark rdf:type EvMarker]
+
+    and after a change B adds a new marker; the events A receives before
+    the sentinel's firing for that marker are exactly those the change
+    (and the marker's own change) caused, because a subscriber receives
+    the firings of one change in registration order and changes in
+    commit order.  Expected events come within 5 s (bounded waits).
+
+    Each unit starts its own server (port 0) and every test starts from
+    oro_reset/0; helpers are prefixed ev_ (all test files load into
+    user).
+
+    Run: cd /work/main && swipl -g run_tests -t halt test/test_events.pl
+*/
+
+:- dynamic
+    ev_test_dir/1,                      % Dir
+    ev_server/1.                        % Server
+
+:- prolog_load_context(directory, Dir),
+   retractall(ev_test_dir(_)),
+   assertz(ev_test_dir(Dir)).
+
+                 /*******************************
+                 *     SERVER AND CONNECTIONS   *
+                 *******************************/
+
+ev_fixture(File, Path) :-
+    ev_test_dir(Dir),
+    atomic_list_concat([Dir, '/fixtures/', File], Path).
+
+%   ev_start(+Options): start the unit's server on a free port of
+%   127.0.0.1.
+
+ev_start(Options) :-
+    ev_stop,
+    oro_server_start([port(0), host('127.0.0.1')|Options], Server),
+    assertz(ev_server(Server)).
+
+ev_start_testsuite :-
+    ev_fixture('testsuite.ttl', File),
+    ev_start([commonsense(false), ontology(File)]).
+
+ev_start_commonsense :-
+    ev_start([commonsense(true)]).
+
+ev_stop :-
+    forall(retract(ev_server(Server)),
+           ( ev_wait_connections(Server),
+             oro_server_stop(Server)
+           )).
+
+%   ev_wait_connections(+Server): wait (10 s at most) until the workers
+%   of the server have seen their clients leave.
+
+ev_wait_connections(Server) :-
+    (   is_dict(Server),
+        get_dict(pool, Server, Pool)
+    ->  ignore(ev_wait_until(ev_pool_idle(Pool), 10))
+    ;   true
+    ).
+
+ev_pool_idle(Pool) :-
+    catch(thread_pool_property(Pool, running(0)), _, true).
+
+ev_port(Port) :-
+    ev_server(Server),
+    !,
+    oro_server_port(Server, Port).
+
+%   ev_fresh: the store as loaded, no watcher, no connection left over
+%   from the previous test.
+
+ev_fresh :-
+    (   ev_server(Server)
+    ->  ev_wait_connections(Server)
+    ;   true
+    ),
+    oro_reset.
+
+%   ev_wait_until(:Condition, +Seconds) is semidet: poll Condition
+%   every 10 ms until it holds, for Seconds at most.
+
+:- meta_predicate ev_wait_until(0, +).
+
+ev_wait_until(Condition, Seconds) :-
+    get_time(Now),
+    Deadline is Now + Seconds,
+    ev_wait_until_(Condition, Deadline).
+
+ev_wait_until_(Condition, Deadline) :-
+    (   call(Condition)
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.01),
+        ev_wait_until_(Condition, Deadline)
+    ;   fail
+    ).
+
+%   ev_connected(-Conns, :Goal): run Goal once with Conns, a list of
+%   new connections (its length fixed by the caller), closed afterwards
+%   whatever happens.
+
+:- meta_predicate ev_connected(?, 0).
+
+ev_connected(Conns, Goal) :-
+    must_be(list, Conns),
+    ev_port(Port),
+    setup_call_cleanup(
+        maplist(oro_connect(Port), Conns),
+        once(Goal),
+        maplist(ev_disconnect, Conns)).
+
+ev_disconnect(Conn) :-
+    catch(oro_disconnect(Conn), _, true).
+
+                 /*******************************
+                 *           REQUESTS           *
+                 *******************************/
+
+%   ev_ok(+Conn, +Method, +Params[, -Value]): a request that must be
+%   answered `ok`.
+
+ev_ok(Conn, Method, Params) :-
+    ev_ok(Conn, Method, Params, _).
+
+ev_ok(Conn, Method, Params, Value) :-
+    oro_call(Conn, Method, Params, Reply, 10),
+    (   Reply = ok(Value0)
+    ->  Value = Value0
+    ;   throw(ev_unexpected_reply(Method, Params, Reply))
+    ).
+
+%   ev_register(+Conn, +Params, -Id): registerEvent, Id a UUID.
+
+ev_register(Conn, Params, Id) :-
+    ev_ok(Conn, registerEvent, Params, Id),
+    (   ev_uuid(Id)
+    ->  true
+    ;   throw(ev_not_a_uuid(Params, Id))
+    ).
+
+%   ev_uuid(+Text) is semidet: Text is a UUID as Java prints it:
+%   lowercase hex digits in groups of 8-4-4-4-12.
+
+ev_uuid(Text) :-
+    string(Text),
+    split_string(Text, "-", "", Groups),
+    maplist(string_length, Groups, [8, 4, 4, 4, 12]),
+    string_codes(Text, Codes),
+    forall(member(C, Codes),
+           ( C == 0'-
+           ; code_type(C, digit)
+           ; between(0'a, 0'f, C)
+           )).
+
+%   ev_exchange(+Conn, +Method, +Params, +N, -Messages): send a request
+%   and read the next N messages, in arrival order.
+
+ev_exchange(Conn, Method, Params, N, Messages) :-
+    oro_send(Conn, Method, Params),
+    length(Messages, N),
+    maplist(ev_receive(Conn), Messages).
+
+ev_receive(Conn, Message) :-
+    oro_receive(Conn, Message, 5).
+
+%   ev_first_value(+Messages, -Value): the value of a leading ok
+%   reply, else `none`.
+
+ev_first_value([ok(Value)|_], Value) :-
+    !.
+ev_first_value(_, none).
+
+%   ev_values(+Content, -Values): the ids of an event's content line
+%   (`["a","b"]`), as a sorted list of strings.
+
+ev_values(Content, Values) :-
+    catch(term_string(List, Content), _, fail),
+    is_list(List),
+    maplist(ev_string, List, Strings),
+    !,
+    msort(Strings, Values).
+ev_values(Content, not_a_list(Content)).
+
+%   ev_parsed(+Event0, -Event): Id-Content with the content parsed by
+%   ev_values/2 (the order of the ids carries no meaning).
+
+ev_parsed(Id-Content, Id-Values) :-
+    !,
+    ev_values(Content, Values).
+ev_parsed(Event, Event).
+
+ev_string(X, S) :-
+    (   string(X)
+    ->  S = X
+    ;   is_list(X)
+    ->  string_codes(S, X)
+    ;   atom(X),
+        atom_string(X, S)
+    ).
+
+                 /*******************************
+                 *     SENTINEL AND STEPS       *
+                 *******************************/
+
+%   ev_sentinel(+Conn, -Id): subscribe Conn to the sentinel watcher.
+
+ev_sentinel(Conn, Id) :-
+    ev_register(Conn, ["NEW_INSTANCE", "ON_TRUE", "mark",
+                       "[?mark rdf:type EvMarker]"], Id).
+
+%   ev_agent_sentinel(+Conn, -Id): the same in the registry of
+%   registerEventForAgent (on the robot's model).
+
+ev_agent_sentinel(Conn, Id) :-
+    ev_ok(Conn, registerEventForAgent, ["myself", "NEW_INSTANCE", "ON_TRUE", "mark",
+                                        "[?mark rdf:type EvMarker]"], Id).
+
+%   ev_marker(-Statement, -Content): a new marker statement, and the
+%   content of the sentinel's event it causes.
+
+ev_marker(Statement, Content) :-
+    flag(ev_mark, N, N+1),
+    format(string(Statement), "[ev_mark_~d rdf:type EvMarker]", [N]),
+    format(string(Content), "[\"ev_mark_~d\"]", [N]).
+
+%   ev_step(+Listener, +Actor, +Sentinel, +Method, +Params, -Events):
+%   Actor runs Method(Params), then adds a marker; Events are the
+%   events Listener receives before the sentinel's firing for the
+%   marker, as Id-Content pairs (then `timeout` if it never comes).
+
+ev_step(Listener, Actor, Sentinel, Method, Params, Events) :-
+    ev_ok(Actor, Method, Params),
+    ev_settle(Listener, Actor, Sentinel, Events).
+
+%   ev_settle(+Listener, +Actor, +Sentinel, -Events): the same with no
+%   change but the marker's.
+
+ev_settle(Listener, Actor, Sentinel, Events) :-
+    ev_marker(Statement, Content),
+    ev_ok(Actor, add, [Statement]),
+    ev_drain(Listener, Sentinel, Content, 200, Events).
+
+ev_drain(Listener, Sentinel, Content, Max, Events) :-
+    oro_next_event(Listener, Event, 5),
+    (   Event = event(Sentinel, Content)
+    ->  Events = []
+    ;   Max =< 0
+    ->  Events = [too_many]
+    ;   Event = event(Id, C)
+    ->  Events = [Id-C|Rest],
+        Max1 is Max - 1,
+        ev_drain(Listener, Sentinel, Content, Max1, Rest)
+    ;   Events = [Event]
+    ).
+
+%   ev_raw_step(+Conn, +Sentinel, +Method, +Params, -Messages): on one
+%   connection, send Method(Params), read the next message (its reply,
+%   unless an event came first), then add a marker and read until the
+%   sentinel's firing: Messages is the reply followed by every event
+%   received before the sentinel's (the marker's own `ok` left out).
+
+ev_raw_step(Conn, Sentinel, Method, Params, [Reply|Events]) :-
+    oro_send(Conn, Method, Params),
+    ev_receive(Conn, Reply),
+    ev_marker(Statement, Content),
+    oro_send(Conn, add, [Statement]),
+    ev_raw_drain(Conn, Sentinel, Content, false, 200, Events).
+
+ev_raw_drain(Conn, Sentinel, Content, SeenOk, Max, Events) :-
+    ev_receive(Conn, Message),
+    (   SeenOk == false,
+        Message == ok("")
+    ->  ev_raw_drain(Conn, Sentinel, Content, true, Max, Events)
+    ;   SeenOk == true,
+        Message = event(Sentinel, Content)
+    ->  Events = []
+    ;   Max =< 0
+    ->  Events = [too_many]
+    ;   memberchk(Message, [timeout, end_of_file])
+    ->  Events = [Message]
+    ;   Events = [Message|Rest],
+        Max1 is Max - 1,
+        ev_raw_drain(Conn, Sentinel, Content, SeenOk, Max1, Rest)
+    ).
+
+%   ev_steps(+Listener, +Actor, +Sentinel, +Steps, -EventLists):
+%   ev_step/6 for each Method-Params of Steps (settle for `settle`).
+
+ev_steps(Listener, Actor, Sentinel, Steps, EventLists) :-
+    maplist(ev_step_(Listener, Actor, Sentinel), Steps, EventLists).
+
+ev_step_(Listener, Actor, Sentinel, settle, Events) :-
+    !,
+    ev_settle(Listener, Actor, Sentinel, Events).
+ev_step_(Listener, Actor, Sentinel, Method-Params, Events) :-
+    ev_step(Listener, Actor, Sentinel, Method, Params, Events).
+
+%   ev_watch(+Type, +Trigger, +VarAndPatterns, -EventLists, +Steps):
+%   on two fresh connections, A registers one watcher and the
+%   sentinel, B runs Steps; EventLists are A's events per step, with
+%   the watcher's id replaced by `w`.
+
+ev_watch(Type, Trigger, VarAndPatterns, Steps, EventLists) :-
+    ev_connected([A, B],
+                 ( ev_register(A, [Type, Trigger|VarAndPatterns], Id),
+                   ev_sentinel(A, S),
+                   ev_steps(A, B, S, Steps, EventLists0)
+                 )),
+    maplist(maplist(ev_name_id(Id, w)), EventLists0, EventLists).
+
+ev_name_id(Id, Name, Event0, Event) :-
+    (   Event0 = Id-Content
+    ->  Event = Name-Content
+    ;   Event = Event0
+    ).
+
+                 /*******************************
+                 *         FACT_CHECKING        *
+                 *******************************/
+
+:- begin_tests(events_fact_checking,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+test(on_true, [ setup(ev_fresh),
+                true(Events == [[w-""], [], [w-""], []])
+              ]) :-
+    ev_watch("FACT_CHECKING", "ON_TRUE", ["[chicken has teeth]"],
+             [ add-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               add-["[chicken has teeth]"],
+               add-["[paris loves dancing]"]
+             ], Events).
+test(on_true_already_true_fires_at_first_change,
+     [ setup(ev_fresh),
+       true(Events == [[w-""], [], []])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_TRUE", ["[gorilla eats apple]"],
+             [ add-["[paris loves dancing]"],
+               add-["[paris loves cheese]"],
+               settle
+             ], Events).
+test(on_true_conjunction_shared_variable,
+     [ setup(ev_fresh),
+       true(Events == [[], [], [w-""]])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_TRUE",
+             ["[?a rdf:type Monkey, ?a eats grass]"],
+             [ settle,
+               add-["[coco eats grass]"],          % coco is no Monkey
+               add-["[baboon eats grass]"]
+             ], Events).
+test(on_false, [ setup(ev_fresh),
+                 true(Events == [[], [], [w-""], [], []])
+               ]) :-
+    ev_watch("FACT_CHECKING", "ON_FALSE", ["[chicken has teeth]"],
+             [ settle,                            % false at the first change: no edge
+               add-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               settle
+             ], Events).
+test(on_false_already_true, [ setup(ev_fresh),
+                              true(Events == [[], [w-""], []])
+                            ]) :-
+    ev_watch("FACT_CHECKING", "ON_FALSE", ["[gorilla eats apple]"],
+             [ settle,
+               remove-["[gorilla eats apple]"],
+               add-["[paris loves dancing]"]
+             ], Events).
+test(on_toggle, [ setup(ev_fresh),
+                  true(Events == [[], [w-""], [], [w-""], [], [w-""]])
+                ]) :-
+    ev_watch("FACT_CHECKING", "ON_TOGGLE", ["[chicken has teeth]"],
+             [ settle,
+               add-["[chicken has teeth]"],
+               add-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               add-["[chicken has teeth]"]
+             ], Events).
+test(on_toggle_already_true_fires_at_first_change,
+     [ setup(ev_fresh),
+       true(Events == [[w-""], [], [w-""]])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_TOGGLE", ["[gorilla eats apple]"],
+             [ settle,
+               settle,
+               remove-["[gorilla eats apple]"]
+             ], Events).
+test(on_true_one_shot, [ setup(ev_fresh),
+                         true(Events-Cleared ==
+                              [[w-""], [], []]-
+                              error("laas.openrobots.ontology.exceptions.EventNotFoundException",
+                                    Message))
+                       ]) :-
+    ev_connected([A, B],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TRUE_ONE_SHOT",
+                                   "[chicken has teeth]"], Id),
+                   ev_sentinel(A, S),
+                   ev_steps(A, B, S,
+                            [ add-["[chicken has teeth]"],
+                              remove-["[chicken has teeth]"],
+                              add-["[chicken has teeth]"]
+                            ], Events0),
+                   oro_call(A, clearEvent, [Id], Cleared)
+                 )),
+    maplist(maplist(ev_name_id(Id, w)), Events0, Events),
+    format(string(Message), "Event ~w does not exist in the model", [Id]).
+test(on_true_one_shot_already_true,
+     [ setup(ev_fresh),
+       true(Events == [[w-""], []])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_TRUE_ONE_SHOT", ["[gorilla eats apple]"],
+             [ settle,
+               settle
+             ], Events).
+test(on_false_one_shot_fires_at_any_first_change,
+     [ setup(ev_fresh),
+       true(Events == [[w-""], [], [], []])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_FALSE_ONE_SHOT", ["[chicken has teeth]"],
+             [ add-["[paris loves dancing]"],
+               add-["[chicken has teeth]"],
+               remove-["[chicken has teeth]"],
+               settle
+             ], Events).
+test(on_false_one_shot_on_true_pattern,
+     [ setup(ev_fresh),
+       true(Events == [[], [w-""], [], []])
+     ]) :-
+    ev_watch("FACT_CHECKING", "ON_FALSE_ONE_SHOT", ["[gorilla eats apple]"],
+             [ settle,
+               remove-["[gorilla eats apple]"],
+               add-["[gorilla eats apple]"],
+               remove-["[gorilla eats apple]"]
+             ], Events).
+test(batch_is_one_change, [ setup(ev_fresh),
+                            true(Events == [[w-""], [w-""], []])
+                          ]) :-
+    ev_watch("FACT_CHECKING", "ON_TOGGLE",
+             ["[chicken has teeth, chicken has feathers]"],
+             [ add-["[chicken has teeth, chicken has feathers, chicken has wings]"],
+               remove-["[chicken has teeth, chicken has feathers]"],
+               add-["[chicken has teeth]"]
+             ], Events).
+test(lower_case_type_and_trigger, [ setup(ev_fresh),
+                                    true(Events == [[w-""]])
+                                  ]) :-
+    ev_watch("fact_checking", "on_true", ["[chicken has teeth]"],
+             [ add-["[chicken has teeth]"]
+             ], Events).
+
+:- end_tests(events_fact_checking).
+
+                 /*******************************
+                 *         NEW_INSTANCE         *
+                 *******************************/
+
+:- begin_tests(events_new_instance,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+test(on_true, [ setup(ev_fresh),
+                true(Events == [[], [w-"[\"banana\"]"], [], [w-"[\"grass\"]"]])
+              ]) :-
+    % §13.10: the initial binding (apple, from gorilla) is not reported.
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["b", "[?a rdf:type Monkey, ?a eats ?b]"],
+             [ add-["[coco rdf:type Monkey]"],
+               add-["[coco eats banana]"],
+               add-["[coco eats banana]"],
+               add-["[baboon eats grass]"]
+             ], Events).
+test(variable_with_question_mark, [ setup(ev_fresh),
+                                    true(Events == [[w-"[\"coco\"]"]])
+                                  ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["?a", "[?a rdf:type Monkey]"],
+             [ add-["[coco rdf:type Monkey]"]
+             ], Events).
+test(on_true_batch_one_event, [ setup(ev_fresh),
+                                true(Events == [w-["m1", "m2"]])
+                              ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["a", "[?a rdf:type Monkey]"],
+             [ add-["[m1 rdf:type Monkey, m2 rdf:type Monkey]"]
+             ], [Events0]),
+    maplist(ev_parsed, Events0, Events).
+test(on_false, [ setup(ev_fresh),
+                 true(Events == [[], [], [w-"[\"coco\"]"], [w-"[\"gorilla\"]"]])
+               ]) :-
+    ev_watch("NEW_INSTANCE", "ON_FALSE", ["a", "[?a rdf:type Monkey]"],
+             [ add-["[coco rdf:type Monkey]"],
+               add-["[bobo rdf:type Monkey]"],
+               remove-["[coco rdf:type Monkey]"],
+               remove-["[gorilla rdf:type Monkey]"]
+             ], Events).
+test(on_toggle, [ setup(ev_fresh),
+                  true(Events == [[w-"[\"coco\"]"], [], [w-"[\"coco\"]"]])
+                ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TOGGLE", ["a", "[?a rdf:type Monkey]"],
+             [ add-["[coco rdf:type Monkey]"],
+               add-["[coco rdf:type Monkey]"],
+               remove-["[coco rdf:type Monkey]"]
+             ], Events).
+test(on_toggle_removed_then_added, [ setup(ev_fresh),
+                                     true(Events == [[w-"[\"35\"]", w-"[\"36\"]"]])
+                                   ]) :-
+    % One change (update of a functional property) removes a value and
+    % adds one: the removed list first, then the added one.
+    ev_watch("NEW_INSTANCE", "ON_TOGGLE", ["v", "[baboon age ?v]"],
+             [ update-["[baboon age 36]"]
+             ], Events).
+test(on_true_one_shot, [ setup(ev_fresh),
+                         true(Events == [[], [w-"[\"coco\"]"], [], []])
+                       ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE_ONE_SHOT", ["a", "[?a rdf:type Monkey]"],
+             [ remove-["[gorilla rdf:type Monkey]"],
+               add-["[coco rdf:type Monkey]"],
+               add-["[bobo rdf:type Monkey]"],
+               add-["[gorilla rdf:type Monkey]"]
+             ], Events).
+test(on_false_one_shot, [ setup(ev_fresh),
+                          true(Events == [[], [w-"[\"coco\"]"], []])
+                        ]) :-
+    ev_watch("NEW_INSTANCE", "ON_FALSE_ONE_SHOT", ["a", "[?a rdf:type Monkey]"],
+             [ add-["[coco rdf:type Monkey, bobo rdf:type Monkey]"],
+               remove-["[coco rdf:type Monkey]"],
+               remove-["[bobo rdf:type Monkey]"]
+             ], Events).
+
+:- end_tests(events_new_instance).
+
+                 /*******************************
+                 *      NEW_CLASS_INSTANCE      *
+                 *******************************/
+
+:- begin_tests(events_new_class_instance,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+test(on_true, [ setup(ev_fresh),
+                true(Events == [[w-"[\"coco\"]"], [w-"[\"bumbo\"]"], [], []])
+              ]) :-
+    % §13.10; bumbo is a Monkey by the domain of climbsOn.
+    ev_watch("NEW_CLASS_INSTANCE", "ON_TRUE", ["[Monkey]"],
+             [ add-["[coco rdf:type Monkey]"],
+               add-["[bumbo climbsOn old_oak]"],
+               add-["[baboon climbsOn old_oak]"],   % baboon was one already
+               add-["[cow eats old_oak]"]           % an Animal, no Monkey
+             ], Events).
+test(removal_updates_the_set_silently, [ setup(ev_fresh),
+                                         true(Events == [[w-"[\"coco\"]"], [], [w-"[\"coco\"]"]])
+                                       ]) :-
+    ev_watch("NEW_CLASS_INSTANCE", "ON_TRUE", ["[Monkey]"],
+             [ add-["[coco rdf:type Monkey]"],
+               remove-["[coco rdf:type Monkey]"],
+               add-["[coco rdf:type Monkey]"]
+             ], Events).
+test(subclass_instances, [ setup(ev_fresh),
+                           true(Events == [[], [w-"[\"lemmy\"]"]])
+                         ]) :-
+    ev_watch("NEW_CLASS_INSTANCE", "ON_TRUE", ["[Monkey]"],
+             [ add-["[lemmy rdf:type Lemur]"],
+               add-["[Lemur rdfs:subClassOf Monkey]"]
+             ], Events).
+test(on_true_one_shot, [ setup(ev_fresh),
+                         true(Events == [[w-"[\"coco\"]"], []])
+                       ]) :-
+    ev_watch("NEW_CLASS_INSTANCE", "ON_TRUE_ONE_SHOT", ["[Monkey]"],
+             [ add-["[coco rdf:type Monkey]"],
+               add-["[bobo rdf:type Monkey]"]
+             ], Events).
+test(other_triggers_never_fire, [ setup(ev_fresh),
+                                  true(Events == [[], [], [], []])
+                                ]) :-
+    ev_connected([A, B],
+                 ( forall(member(T, ["ON_FALSE", "ON_TOGGLE", "ON_FALSE_ONE_SHOT"]),
+                          ev_register(A, ["NEW_CLASS_INSTANCE", T, "[Monkey]"], _)),
+                   ev_sentinel(A, S),
+                   ev_steps(A, B, S,
+                            [ add-["[coco rdf:type Monkey]"],
+                              remove-["[coco rdf:type Monkey]"],
+                              remove-["[gorilla rdf:type Monkey]"],
+                              add-["[bumbo climbsOn old_oak]"]
+                            ], Events)
+                 )).
+
+:- end_tests(events_new_class_instance).
+
+                 /*******************************
+                 *          INFERENCE           *
+                 *******************************/
+
+:- begin_tests(events_inference,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+test(schema_change_adds_and_removes, [ setup(ev_fresh),
+                                       true(Events == [[], [w-"[\"sparrow\"]"],
+                                                       [w-"[\"sparrow\"]"]])
+                                     ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TOGGLE", ["x", "[?x rdf:type Animal]"],
+             [ add-["[sparrow rdf:type Bird]"],
+               add-["[Bird rdfs:subClassOf Animal]"],
+               clear-["[Bird rdfs:subClassOf Animal]"]
+             ], Events).
+test(inverse_property, [ setup(ev_fresh),
+                         true(Events == [[], [w-""]])
+                       ]) :-
+    ev_watch("FACT_CHECKING", "ON_TRUE", ["[table isUnder cup]"],
+             [ settle,                            % evaluated once: false
+               add-["[cup isOn table]"]
+             ], Events).
+test(transitive_subproperty, [ setup(ev_fresh),
+                               true(Events == [[], [w-"[\"cup\",\"table\"]"]])
+                             ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["x", "[?x isAt room]"],
+             [ add-["[cup isOn table]"],
+               add-["[table isAt room]"]
+             ], Events).
+test(range_inference, [ setup(ev_fresh),
+                        true(Events == [[w-"[\"old_oak\"]"]])
+                      ]) :-
+    ev_watch("NEW_CLASS_INSTANCE", "ON_TRUE", ["[Plant]"],
+             [ add-["[bumbo climbsOn old_oak]"]
+             ], Events).
+
+:- end_tests(events_inference).
+
+                 /*******************************
+                 *   REGISTRATION AND CLEARING  *
+                 *******************************/
+
+:- begin_tests(events_registration,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+%   The vectors of §13.10, on one connection as the spec shows them:
+%   each change's reply, then the events it caused.  (The sentinel is
+%   our addition, for the "no event" steps.)
+
+test(vector_fact_checking,
+     [ setup(ev_fresh),
+       true(Got == Expected)
+     ]) :-
+    ev_connected([C],
+                 ( ev_exchange(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                                  "[chicken has teeth]"], 1, M1),
+                   ev_exchange(C, registerEvent, ["FACT_CHECKING", "ON_FALSE_ONE_SHOT",
+                                                  "[chicken has teeth]"], 1, M2),
+                   ev_sentinel(C, S),
+                   ev_raw_step(C, S, add, ["[paris loves dancing]"], M3),
+                   ev_raw_step(C, S, add, ["[paris prefers listening_to_music]"], M4),
+                   ev_raw_step(C, S, add, ["[chicken has teeth]"], M5),
+                   ev_raw_step(C, S, remove, ["[chicken has teeth]"], M6),
+                   ev_exchange(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                                  "[?a rdf:type Monkey, ?a eats grass]"], 1, M7),
+                   ev_raw_step(C, S, add, ["[baboon eats grass]"], M8),
+                   ev_exchange(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                                  "[chicken has teeth]"], 1, M9)
+                 )),
+    ev_first_value(M1, U1),
+    ev_first_value(M2, U2),
+    ev_first_value(M7, U3),
+    Got = [M1, M2, M3, M4, M5, M6, M7, M8, M9],
+    Expected = [ [ok(U1)],
+                 [ok(U2)],
+                 [ok(""), event(U2, "")],   % false: ON_FALSE_ONE_SHOT fires
+                 [ok("")],                  % and was removed
+                 [ok(""), event(U1, "")],
+                 [ok("")],                  % ON_TRUE only
+                 [ok(U3)],
+                 [ok(""), event(U3, "")],
+                 [ok(U1)]                   % identical watcher: same id
+               ].
+test(vector_ids_are_uuids, [ setup(ev_fresh),
+                             true(Checks == [true, true, true])
+                           ]) :-
+    ev_connected([C],
+                 ( ev_ok(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                            "[chicken has teeth]"], U1),
+                   ev_ok(C, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "a",
+                                            "[?a rdf:type Monkey]"], U2),
+                   ev_ok(C, registerEvent, ["NEW_CLASS_INSTANCE", "ON_TRUE",
+                                            "[Monkey]"], U3)
+                 )),
+    maplist(ev_check(ev_uuid), [U1, U2, U3], Checks).
+test(vector_clear_event, [ setup(ev_fresh),
+                           true(Got == Expected)
+                         ]) :-
+    ev_connected([C],
+                 ( ev_exchange(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                                  "[chicken has teeth]"], 1, M1),
+                   ev_first_value(M1, U1),
+                   ev_exchange(C, clearEvent, [U1], 1, M2),
+                   ev_sentinel(C, S),
+                   ev_raw_step(C, S, add, ["[chicken has teeth]"], M3),
+                   ev_raw_step(C, S, remove, ["[chicken has teeth]"], M4),
+                   ev_exchange(C, clearEvent, [U1], 1, M5)
+                 )),
+    format(string(NotFound), "Event ~w does not exist in the model", [U1]),
+    Got = [M2, M3, M4, M5],
+    Expected = [ [ok("")],
+                 [ok("")],
+                 [ok("")],
+                 [error("laas.openrobots.ontology.exceptions.EventNotFoundException",
+                        NotFound)]
+               ].
+test(vector_new_instance, [ setup(ev_fresh),
+                            true(Got == Expected)
+                          ]) :-
+    ev_connected([C],
+                 ( ev_exchange(C, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "b",
+                                                  "[?a rdf:type Monkey, ?a eats ?b]"], 1, M1),
+                   ev_sentinel(C, S),
+                   ev_raw_step(C, S, add, ["[coco rdf:type Monkey]"], M2),
+                   ev_raw_step(C, S, add, ["[coco eats banana]"], M3),
+                   ev_raw_step(C, S, add, ["[coco eats banana]"], M4)
+                 )),
+    ev_first_value(M1, U3),
+    Got = [M1, M2, M3, M4],
+    Expected = [ [ok(U3)],
+                 [ok("")],
+                 [ok(""), event(U3, "[\"banana\"]")],
+                 [ok("")]
+               ].
+test(vector_new_class_instance, [ setup(ev_fresh),
+                                  true(Got == Expected)
+                                ]) :-
+    ev_connected([C],
+                 ( ev_exchange(C, registerEvent, ["NEW_CLASS_INSTANCE", "ON_TRUE",
+                                                  "[Monkey]"], 1, M1),
+                   ev_exchange(C, add, ["[coco rdf:type Monkey]"], 2, M2),
+                   ev_exchange(C, add, ["[bumbo climbsOn old_oak]"], 2, M3)
+                 )),
+    ev_first_value(M1, U4),
+    Got = [M1, M2, M3],
+    Expected = [ [ok(U4)],
+                 [ok(""), event(U4, "[\"coco\"]")],
+                 [ok(""), event(U4, "[\"bumbo\"]")]
+               ].
+test(clear_events, [ setup(ev_fresh),
+                     true(Got == [[], [], [], []]-new_id)
+                   ]) :-
+    ev_connected([A, B],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TOGGLE", "[chicken has teeth]"], _),
+                   ev_register(A, ["NEW_INSTANCE", "ON_TRUE", "a", "[?a rdf:type Monkey]"], _),
+                   ev_register(A, ["NEW_CLASS_INSTANCE", "ON_TRUE", "[Monkey]"], _),
+                   ev_sentinel(A, S0),
+                   ev_ok(B, clearEvents, []),
+                   ev_sentinel(A, S),          % registered anew
+                   ev_steps(A, B, S,
+                            [ add-["[chicken has teeth]"],
+                              add-["[coco rdf:type Monkey]"],
+                              remove-["[chicken has teeth]"],
+                              settle
+                            ], Events)
+                 )),
+    (   S \== S0
+    ->  NewId = new_id
+    ;   NewId = same_id
+    ),
+    Got = Events-NewId.
+test(clear_event_unknown, [ setup(ev_fresh),
+                            true(Reply == error("laas.openrobots.ontology.exceptions.EventNotFoundException",
+                                                "Event 0b5a8a9e-3d1c-4c2e-9d7e-2f1a6b3c4d5e does not exist in the model"))
+                          ]) :-
+    ev_connected([C], oro_call(C, clearEvent, ["0b5a8a9e-3d1c-4c2e-9d7e-2f1a6b3c4d5e"], Reply)).
+test(clear_event_malformed_uuid, [ setup(ev_fresh),
+                                   true(Reply == error("java.lang.IllegalArgumentException",
+                                                       "Invalid UUID string: not-a-uuid"))
+                                 ]) :-
+    ev_connected([C], oro_call(C, clearEvent, ["not-a-uuid"], Reply)).
+test(clear_event_from_another_connection, [ setup(ev_fresh),
+                                            true(Events == [[]])
+                                          ]) :-
+    ev_connected([A, B],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   ev_sentinel(A, S),
+                   ev_ok(B, clearEvent, [U]),
+                   ev_steps(A, B, S, [add-["[chicken has teeth]"]], Events)
+                 )).
+test(error_event_type, [ setup(ev_fresh),
+                         true(Reply == error("laas.openrobots.ontology.exceptions.InvalidEventDescriptorException",
+                                             "Invalid event type. One of [FACT_CHECKING, NEW_CLASS_INSTANCE, NEW_INSTANCE] was expected. Got FOO instead."))
+                       ]) :-
+    ev_connected([C], oro_call(C, registerEvent, ["FOO", "ON_TRUE", "[x y z]"], Reply)).
+test(error_trigger, [ setup(ev_fresh),
+                      true(Reply == error("laas.openrobots.ontology.exceptions.InvalidEventDescriptorException",
+                                          "Invalid event triggering type. One of [ON_TRUE, ON_TRUE_ONE_SHOT, ON_FALSE, ON_FALSE_ONE_SHOT, ON_TOGGLE] was expected. Got ON_BAR instead."))
+                    ]) :-
+    ev_connected([C], oro_call(C, registerEvent, ["FACT_CHECKING", "ON_BAR", "[x y z]"], Reply)).
+test(error_new_instance_without_variable,
+     [ setup(ev_fresh),
+       true(Replies == [Error, Error])
+     ]) :-
+    Error = error("laas.openrobots.ontology.exceptions.InvalidEventDescriptorException",
+                  "NEW_INSTANCE events require as first parameter a variable name to bind."),
+    ev_connected([C],
+                 ( oro_call(C, registerEvent, ["NEW_INSTANCE", "ON_TRUE",
+                                               "[?a rdf:type Monkey]"], R1),
+                   oro_call(C, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "",
+                                               "[?a rdf:type Monkey]"], R2)
+                 )),
+    Replies = [R1, R2].
+test(error_unknown_class, [ setup(ev_fresh),
+                            true(Reply == error("laas.openrobots.ontology.exceptions.EventRegistrationException",
+                                                "The class Unicorn does not exists in the ontology. Cannot register the NEW_INSTANCE event!"))
+                          ]) :-
+    ev_connected([C], oro_call(C, registerEvent, ["NEW_CLASS_INSTANCE", "ON_TRUE",
+                                                  "[Unicorn]"], Reply)).
+test(error_two_classes, [ setup(ev_fresh),
+                          true(Name-Tail == "laas.openrobots.ontology.exceptions.EventRegistrationException"-true)
+                        ]) :-
+    ev_connected([C], oro_call(C, registerEvent, ["NEW_CLASS_INSTANCE", "ON_TRUE",
+                                                  "[Monkey, Animal]"], Reply)),
+    (   Reply = error(Name, Message),
+        string_concat(_, "Only one class name was expected.", Message)
+    ->  Tail = true
+    ;   Name = Reply,
+        Tail = false
+    ).
+test(error_bad_pattern, [ setup(ev_fresh),
+                          true(Name == "laas.openrobots.ontology.exceptions.EventRegistrationException")
+                        ]) :-
+    ev_connected([C], oro_call(C, registerEvent, ["FACT_CHECKING", "ON_TRUE",
+                                                  "[toto titi]"], Reply)),
+    (   Reply = error(Name, _)
+    ->  true
+    ;   Name = Reply
+    ).
+test(failed_registration_registers_nothing, [ setup(ev_fresh),
+                                              true(Watchers == [])
+                                            ]) :-
+    ev_connected([C],
+                 forall(member(Ps, [ ["FOO", "ON_TRUE", "[x y z]"],
+                                     ["NEW_CLASS_INSTANCE", "ON_TRUE", "[Unicorn]"],
+                                     ["FACT_CHECKING", "ON_TRUE", "[toto titi]"]
+                                   ]),
+                        oro_call(C, registerEvent, Ps, _))),
+    oro_watchers(myself, Watchers).
+
+%   Deduplication.
+
+test(same_watcher_same_id, [ setup(ev_fresh),
+                             true(Ids == [U, U, U, U])
+                           ]) :-
+    ev_connected([A, B],
+                 ( ev_register(A, ["NEW_INSTANCE", "ON_TRUE", "a", "[?a rdf:type Monkey]"], U),
+                   ev_register(A, ["NEW_INSTANCE", "ON_TRUE", "a", "[?a rdf:type Monkey]"], U2),
+                   ev_register(B, ["new_instance", "on_true", "?a", "[?a rdf:type Monkey]"], U3),
+                   ev_register(B, ["NEW_INSTANCE", "ON_TRUE", " a ", "[ ?a rdf:type Monkey ]"], U4)
+                 )),
+    Ids = [U, U2, U3, U4].
+test(different_watchers_different_ids, [ setup(ev_fresh),
+                                         true(Distinct == 5)
+                                       ]) :-
+    ev_connected([A],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U1),
+                   ev_register(A, ["FACT_CHECKING", "ON_FALSE", "[chicken has teeth]"], U2),
+                   ev_register(A, ["FACT_CHECKING", "ON_TRUE",
+                                   "[chicken has teeth, chicken has wings]"], U3),
+                   ev_register(A, ["FACT_CHECKING", "ON_TRUE",
+                                   "[chicken has wings, chicken has teeth]"], U4),
+                   ev_register(A, ["NEW_CLASS_INSTANCE", "ON_TRUE", "[Monkey]"], U5)
+                 )),
+    sort([U1, U2, U3, U4, U5], Ids),
+    length(Ids, Distinct).
+test(dedup_one_event_per_connection, [ setup(ev_fresh),
+                                       true(Got == [[U-""], [U-""]])
+                                     ]) :-
+    ev_connected([A, B, C],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], _),
+                   ev_register(B, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], _),
+                   ev_sentinel(A, S),
+                   ev_sentinel(B, S),
+                   ev_ok(C, add, ["[chicken has teeth]"]),
+                   ev_marker(Statement, Content),
+                   ev_ok(C, add, [Statement]),
+                   ev_drain(A, S, Content, 200, EA),
+                   ev_drain(B, S, Content, 200, EB)
+                 )),
+    Got = [EA, EB].
+test(dedup_subscribers_counted, [ setup(ev_fresh),
+                                  true(N == 2)
+                                ]) :-
+    ev_connected([A, B],
+                 ( ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   ev_register(A, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   ev_register(B, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   oro_watchers(myself, Watchers),
+                   atom_string(Id, U),
+                   memberchk(watcher(Id, _, _, _, _, N), Watchers)
+                 )).
+
+%   registerEventForAgent: a registry of its own on the robot's model.
+
+test(for_agent_myself, [ setup(ev_fresh),
+                         true(Got == [[w-""], [w-""], []]-distinct)
+                       ]) :-
+    % The sentinel is registered in the agent registry too: a connection
+    % has one subscriber per registry (see commit_order_across_registries).
+    ev_connected([A, B],
+                 ( ev_ok(A, registerEventForAgent, ["myself", "FACT_CHECKING", "ON_TOGGLE",
+                                                    "[chicken has teeth]"], U),
+                   ev_register(A, ["FACT_CHECKING", "ON_TOGGLE", "[chicken has teeth]"], P),
+                   ev_ok(A, clearEvent, [P]),
+                   ev_agent_sentinel(A, S),
+                   ev_step(A, B, S, add, ["[chicken has teeth]"], E1),
+                   ev_ok(B, clearEvents, []),          % the plain registry only
+                   ev_step(A, B, S, remove, ["[chicken has teeth]"], E2),
+                   ev_ok(B, clearEventsForAgent, ["myself"]),
+                   ev_agent_sentinel(A, S1),
+                   ev_step(A, B, S1, add, ["[chicken has teeth]"], E3)
+                 )),
+    maplist(maplist(ev_name_id(U, w)), [E1, E2, E3], Events),
+    (   U \== P
+    ->  Distinct = distinct
+    ;   Distinct = same
+    ),
+    Got = Events-Distinct.
+test(commit_order_across_registries,
+     [ setup(ev_fresh),
+       true(Bad == [])
+     ]) :-
+    % A registerEventForAgent watcher fires at each change; the plain
+    % sentinel at the next one: its event must come after.
+    ev_connected([A, B],
+                 ( ev_ok(A, registerEventForAgent, ["myself", "FACT_CHECKING", "ON_TOGGLE",
+                                                    "[chicken has teeth]"], U),
+                   ev_sentinel(A, S),
+                   ev_settle(A, B, S, _),
+                   findall(I-Events,
+                           ( between(1, 100, I),
+                             (   I mod 2 =:= 1
+                             ->  Method = add
+                             ;   Method = remove
+                             ),
+                             ev_step(A, B, S, Method, ["[chicken has teeth]"], Events)
+                           ), Steps)
+                 )),
+    exclude(ev_fired_once(U), Steps, Bad).
+test(for_agent_unknown, [ setup(ev_fresh),
+                          true(Reply == error("laas.openrobots.ontology.exceptions.AgentNotFoundException",
+                                              "I couldn't find the agent nobody."))
+                        ]) :-
+    ev_connected([C], oro_call(C, registerEventForAgent,
+                               ["nobody", "FACT_CHECKING", "ON_TRUE", "[a b c]"], Reply)).
+
+:- end_tests(events_registration).
+
+ev_fired_once(Id, _-Events) :-
+    Events == [Id-""].
+
+ev_check(Goal, X, Result) :-
+    (   call(Goal, X)
+    ->  Result = true
+    ;   Result = false(X)
+    ).
+
+                 /*******************************
+                 *     SEED SESSION (§13.13)    *
+                 *******************************/
+
+:- begin_tests(events_seed_session,
+               [ setup(ev_start_commonsense),
+                 cleanup(ev_stop)
+               ]).
+
+%   The telnet session verbatim, on one connection, every message read
+%   in arrival order: each `ok` comes before the event its request
+%   caused, and nothing else is sent (the sentinel, registered first,
+%   fires last).
+
+test(telnet_session, [ setup(ev_fresh),
+                       true(Got == Expected)
+                     ]) :-
+    ev_connected([C],
+                 ( ev_sentinel(C, S),
+                   ev_exchange(C, add, ["[kitchen_table rdf:type Table, fork1 rdf:type Fork, glass1 rdf:type Glass]"], 1, M1),
+                   ev_exchange(C, add, ["[fork1 isOn kitchen_table]"], 1, M2),
+                   ev_exchange(C, find, ["o", "[?o isAt kitchen_table]"], 1, M3),
+                   ev_exchange(C, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o",
+                                                  "[?o isAt kitchen_table, ?o rdf:type Artifact]"], 1, M4),
+                   ev_exchange(C, add, ["[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]"], 2, M5),
+                   ev_exchange(C, add, ["[glass1 isOn kitchen_table]"], 2, M6),
+                   ev_marker(Statement, Content),
+                   ev_exchange(C, add, [Statement], 2, M7)
+                 )),
+    ev_first_value(M4, Id),
+    (   ev_uuid(Id)
+    ->  IdShape = uuid
+    ;   IdShape = not_a_uuid(Id)
+    ),
+    (   M3 = [ok(Found)],
+        ev_values(Found, Values),
+        memberchk("fork1", Values)
+    ->  Find = fork1_found
+    ;   Find = M3
+    ),
+    Got = [M1, M2, Find, M4, M5, M6, M7, IdShape],
+    Expected = [ [ok("")],
+                 [ok("")],
+                 fork1_found,
+                 [ok(Id)],
+                 [ok(""), event(Id, "[\"fork1\"]")],
+                 [ok(""), event(Id, "[\"glass1\"]")],
+                 [ok(""), event(S, Content)],
+                 uuid
+               ].
+test(two_connections, [ setup(ev_fresh),
+                        true(Events == [[], [w-"[\"fork1\"]"], [w-"[\"glass1\"]"], []])
+                      ]) :-
+    ev_connected([A, B],
+                 ( ev_ok(B, add, ["[kitchen_table rdf:type Table, fork1 rdf:type Fork, glass1 rdf:type Glass]"]),
+                   ev_register(A, ["NEW_INSTANCE", "ON_TRUE", "o",
+                                   "[?o isAt kitchen_table, ?o rdf:type Artifact]"], Id),
+                   ev_sentinel(A, S),
+                   ev_steps(A, B, S,
+                            [ add-["[fork1 isOn kitchen_table]"],
+                              add-["[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]"],
+                              add-["[glass1 isOn kitchen_table]"],
+                              add-["[glass1 isOn kitchen_table]"]
+                            ], Events0)
+                 )),
+    maplist(maplist(ev_name_id(Id, w)), Events0, Events).
+
+:- end_tests(events_seed_session).
+
+
+                 /*******************************
+                 *            AGENTS            *
+                 *******************************/
+
+:- begin_tests(events_agents,
+               [ setup(ev_start_commonsense),
+                 cleanup(ev_stop)
+               ]).
+
+%   §13.11: a watcher on an agent's model sees that model only.  The
+%   sentinel sits in the same (agent) registry, on the robot's model.
+
+test(agent_model_events, [ setup(ev_fresh),
+                           true(Events == [[], [w-""], [], []])
+                         ]) :-
+    ev_connected([A, B],
+                 ( ev_ok(B, add, ["[gerard rdf:type Agent]"]),
+                   ev_ok(A, registerEventForAgent, ["gerard", "FACT_CHECKING", "ON_TRUE",
+                                                    "[chicken has teeth]"], U),
+                   ev_agent_sentinel(A, S),
+                   ev_step(A, B, S, add, ["[chicken has teeth]"], E1),
+                   ev_step(A, B, S, addForAgent, ["gerard", "[chicken has teeth]"], E2),
+                   ev_ok(B, clearEventsForAgent, ["gerard"]),
+                   ev_step(A, B, S, removeForAgent, ["gerard", "[chicken has teeth]"], E3),
+                   ev_step(A, B, S, addForAgent, ["gerard", "[chicken has teeth]"], E4)
+                 )),
+    maplist(maplist(ev_name_id(U, w)), [E1, E2, E3, E4], Events).
+
+:- end_tests(events_agents).
+
+                 /*******************************
+                 *          DISCONNECT          *
+                 *******************************/
+
+:- begin_tests(events_disconnect,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+ev_watcher_ids(Ids) :-
+    oro_watchers(myself, Watchers),
+    findall(Id, member(watcher(Id, _, _, _, _, _), Watchers), Ids).
+
+ev_no_watcher(U) :-
+    atom_string(Id, U),
+    ev_watcher_ids(Ids),
+    \+ memberchk(Id, Ids).
+
+ev_subscribers(U, N) :-
+    atom_string(Id, U),
+    oro_watchers(myself, Watchers),
+    memberchk(watcher(Id, _, _, _, _, N), Watchers).
+
+ev_teeth_watcher(["FACT_CHECKING", "ON_TOGGLE", "[chicken has teeth]"]).
+
+test(orphan_watcher_dropped, [ setup(ev_fresh),
+                               true(Got == [ok, ok, ok, dropped, new_id, [[], [w-""]]])
+                             ]) :-
+    ev_teeth_watcher(W),
+    ev_port(Port),
+    oro_connect(Port, A),
+    ev_register(A, W, Ua),
+    oro_disconnect(A),
+    ev_connected([B, C],
+                 ( % changes right away, racing with the server seeing A leave
+                   oro_call(B, add, ["[chicken has teeth]"], R1),
+                   oro_call(B, remove, ["[chicken has teeth]"], R2),
+                   oro_call(B, add, ["[chicken has teeth]"], R3),
+                   (   ev_wait_until(ev_no_watcher(Ua), 10)
+                   ->  Dropped = dropped
+                   ;   Dropped = still_there
+                   ),
+                   ev_register(C, W, Uc),
+                   ev_sentinel(C, S),
+                   ev_steps(C, B, S, [ remove-["[chicken has teeth]"],
+                                        add-["[chicken has teeth]"]
+                                      ], Events0)
+                 )),
+    maplist(ev_reply_kind, [R1, R2, R3], Kinds),
+    (   Uc \== Ua
+    ->  NewId = new_id
+    ;   NewId = same_id
+    ),
+    maplist(maplist(ev_name_id(Uc, w)), Events0, Events),
+    append(Kinds, [Dropped, NewId, Events], Got).
+test(close_method_drops_watchers, [ setup(ev_fresh),
+                                    true(Got == [closing, dropped])
+                                  ]) :-
+    ev_teeth_watcher(W),
+    ev_connected([A],
+                 ( ev_register(A, W, Ua),
+                   oro_call(A, close, [], Closing)
+                 )),
+    (   ev_wait_until(ev_no_watcher(Ua), 10)
+    ->  Dropped = dropped
+    ;   Dropped = still_there
+    ),
+    Got = [Closing, Dropped].
+test(shared_watcher_survives, [ setup(ev_fresh),
+                                true(Got == [1, [[w-""]], same_id])
+                              ]) :-
+    ev_teeth_watcher(W),
+    ev_port(Port),
+    oro_connect(Port, A),
+    ev_connected([B, C],
+                 ( ev_register(A, W, U),
+                   ev_register(B, W, U),
+                   ev_sentinel(B, S),
+                   oro_disconnect(A),
+                   (   ev_wait_until(ev_subscribers(U, 1), 10)
+                   ->  N = 1
+                   ;   ev_subscribers(U, N)
+                   ),
+                   ev_steps(B, C, S, [add-["[chicken has teeth]"]], Events0),
+                   ev_register(C, W, U2)
+                 )),
+    maplist(maplist(ev_name_id(U, w)), Events0, Events),
+    (   U2 == U
+    ->  Same = same_id
+    ;   Same = new_id
+    ),
+    Got = [N, Events, Same].
+test(disconnected_client_gets_nothing_others_do,
+     [ setup(ev_fresh),
+       true(Got == [[[w-"[\"coco\"]"]], 0])
+     ]) :-
+    % Many events for a client that has gone: the server keeps serving.
+    ev_port(Port),
+    oro_connect(Port, A),
+    ev_register(A, ["NEW_INSTANCE", "ON_TOGGLE", "a", "[?a rdf:type Monkey]"], U),
+    oro_disconnect(A),
+    ev_connected([B, C],
+                 ( forall(between(1, 20, _),
+                          ( ev_ok(C, add, ["[coco rdf:type Monkey]"]),
+                            ev_ok(C, remove, ["[coco rdf:type Monkey]"])
+                          )),
+                   ignore(ev_wait_until(ev_no_watcher(U), 10)),
+                   ev_register(B, ["NEW_INSTANCE", "ON_TOGGLE", "a", "[?a rdf:type Monkey]"], U2),
+                   ev_sentinel(B, S),
+                   ev_steps(B, C, S, [add-["[coco rdf:type Monkey]"]], Events0)
+                 )),
+    maplist(maplist(ev_name_id(U2, w)), Events0, Events),
+    (   ev_wait_until(ev_watcher_ids([]), 10)
+    ->  Left = 0
+    ;   ev_watcher_ids(Ids),
+        length(Ids, Left)
+    ),
+    Got = [Events, Left].
+
+:- end_tests(events_disconnect).
+
+ev_reply_kind(ok(_), ok) :- !.
+ev_reply_kind(Reply, Reply).
+
+                 /*******************************
+                 *          PROLOG API          *
+                 *******************************/
+
+%   In process, no server: callbacks send ev(Tag, Id, Content) to a
+%   message queue.
+
+ev_init_testsuite :-
+    ev_stop,
+    ev_fixture('testsuite.ttl', File),
+    oro_init([commonsense(false), ontologies([File])]).
+
+ev_to_queue(Queue, Tag, Id, Content) :-
+    thread_send_message(Queue, ev(Tag, Id, Content)).
+
+ev_get(Queue, Message) :-
+    (   thread_get_message(Queue, Message0, [timeout(5)])
+    ->  Message = Message0
+    ;   Message = timeout
+    ).
+
+%   ev_with_queue(-Queue, -Ids, :Goal): Goal with a new queue; every
+%   watcher id Goal adds to the open list Ids is unsubscribed after.
+
+:- meta_predicate ev_with_queue(-, ?, 0).
+
+ev_with_queue(Queue, Ids, Goal) :-
+    setup_call_cleanup(
+        message_queue_create(Queue),
+        once(Goal),
+        ( ev_close_list(Ids, Closed),
+          forall(member(Id, Closed), catch(oro_unsubscribe(Id), _, true)),
+          message_queue_destroy(Queue)
+        )).
+
+ev_close_list(List, Closed) :-
+    (   var(List)
+    ->  Closed = []
+    ;   List = [H|T]
+    ->  Closed = [H|Closed1],
+        ev_close_list(T, Closed1)
+    ;   Closed = []
+    ).
+
+ev_iri(Name, IRI) :-
+    rdf_global_id(oro:Name, IRI).
+
+:- begin_tests(events_prolog_api,
+               [ setup(ev_init_testsuite),
+                 cleanup(oro_reset)
+               ]).
+
+test(subscribe_new_instance, [ setup(oro_reset),
+                               true(Message == ev(t, Id, [Coco]))
+                             ]) :-
+    ev_iri(coco, Coco),
+    ev_with_queue(Q, [Id|_],
+                  ( oro_subscribe(myself, 'NEW_INSTANCE', 'ON_TRUE', x,
+                                  ["?x rdf:type Monkey"], ev_to_queue(Q, t), Id),
+                    oro_add(myself, ["coco rdf:type Monkey"]),
+                    ev_get(Q, Message)
+                  )).
+test(subscribe_fact_checking, [ setup(oro_reset),
+                                true(Messages == [ev(t, Id, []), ev(t, Id, [])])
+                              ]) :-
+    ev_with_queue(Q, [Id|_],
+                  ( oro_subscribe(myself, fact_checking, on_toggle, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, t), Id),
+                    oro_add(myself, ["chicken has teeth"]),
+                    ev_get(Q, M1),
+                    oro_remove(myself, ["chicken has teeth"]),
+                    ev_get(Q, M2)
+                  )),
+    Messages = [M1, M2].
+test(subscribe_term_patterns, [ setup(oro_reset),
+                                true(Message == ev(t, Id, [Coco]))
+                              ]) :-
+    ev_iri(coco, Coco),
+    ev_with_queue(Q, [Id|_],
+                  ( oro_subscribe(myself, new_class_instance, on_true, '',
+                                  [oro:'Monkey'], ev_to_queue(Q, t), Id),
+                    oro_add(myself, [rdf(oro:coco, rdf:type, oro:'Monkey')]),
+                    ev_get(Q, Message)
+                  )).
+test(watchers, [ setup(oro_reset),
+                 true(Got == [ watcher(F, fact_checking, on_true, '', ["chicken has teeth"], 1),
+                               watcher(N, new_instance, on_toggle, x, ["?x rdf:type Monkey"], 1)
+                             ])
+               ]) :-
+    ev_with_queue(Q, [F, N|_],
+                  ( oro_subscribe(myself, 'FACT_CHECKING', 'ON_TRUE', ignored,
+                                  ["chicken has teeth"], ev_to_queue(Q, f), F),
+                    oro_subscribe(myself, new_instance, on_toggle, '?x',
+                                  ["?x rdf:type Monkey"], ev_to_queue(Q, n), N),
+                    oro_watchers(myself, Watchers),
+                    include(ev_watcher_in([F, N]), Watchers, Got)
+                  )).
+test(unsubscribe, [ setup(oro_reset),
+                    true(Got == [absent, ev(s, S, [M1])])
+                  ]) :-
+    ev_iri(ev_m1, M1),
+    ev_with_queue(Q, [Id, S|_],
+                  ( oro_subscribe(myself, fact_checking, on_true, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, w), Id),
+                    oro_subscribe(myself, new_instance, on_true, m,
+                                  ["?m rdf:type EvMarker"], ev_to_queue(Q, s), S),
+                    oro_unsubscribe(Id),
+                    oro_watchers(myself, Watchers),
+                    (   memberchk(watcher(Id, _, _, _, _, _), Watchers)
+                    ->  Present = present
+                    ;   Present = absent
+                    ),
+                    oro_add(myself, ["chicken has teeth"]),
+                    oro_add(myself, ["ev_m1 rdf:type EvMarker"]),
+                    ev_get(Q, Next)
+                  )),
+    Got = [Present, Next].
+test(dedup_two_callbacks, [ setup(oro_reset),
+                            true(Got == [Id, 2, [ev(a, Id, []), ev(b, Id, [])]])
+                          ]) :-
+    ev_with_queue(Q, [Id, Id2|_],
+                  ( oro_subscribe(myself, fact_checking, on_true, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, a), Id),
+                    oro_subscribe(myself, fact_checking, on_true, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, b), Id2),
+                    oro_watchers(myself, Watchers),
+                    memberchk(watcher(Id, _, _, _, _, N), Watchers),
+                    oro_add(myself, ["chicken has teeth"]),
+                    ev_get(Q, M1),
+                    ev_get(Q, M2)
+                  )),
+    msort([M1, M2], Ms),
+    Got = [Id2, N, Ms].
+test(unsubscribe_shared_watcher,
+     [ setup(oro_reset),
+       true(Got == [absent, ev(s, S, [M1])])
+     ]) :-
+    ev_iri(ev_m1, M1),
+    ev_with_queue(Q, [Id, _, S|_],
+                  ( oro_subscribe(myself, fact_checking, on_true, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, a), Id),
+                    oro_subscribe(myself, fact_checking, on_true, '',
+                                  ["chicken has teeth"], ev_to_queue(Q, b), _),
+                    oro_subscribe(myself, new_instance, on_true, m,
+                                  ["?m rdf:type EvMarker"], ev_to_queue(Q, s), S),
+                    oro_unsubscribe(Id),
+                    oro_watchers(myself, Watchers),
+                    (   memberchk(watcher(Id, _, _, _, _, _), Watchers)
+                    ->  Present = present
+                    ;   Present = absent
+                    ),
+                    oro_add(myself, ["chicken has teeth"]),
+                    oro_add(myself, ["ev_m1 rdf:type EvMarker"]),
+                    ev_get(Q, Next)
+                  )),
+    Got = [Present, Next].
+test(one_shot_removed_after_sync, [ setup(oro_reset),
+                                    true(Got == [ev(t, Id, [Coco]), absent])
+                                  ]) :-
+    ev_iri(coco, Coco),
+    ev_with_queue(Q, [Id|_],
+                  ( oro_subscribe(myself, new_instance, on_true_one_shot, x,
+                                  ["?x rdf:type Monkey"], ev_to_queue(Q, t), Id),
+                    oro_add(myself, ["coco rdf:type Monkey"]),
+                    oro_events_sync,
+                    oro_watchers(myself, Watchers),
+                    (   memberchk(watcher(Id, _, _, _, _, _), Watchers)
+                    ->  Present = present
+                    ;   Present = absent
+                    ),
+                    ev_get(Q, Message)
+                  )),
+    Got = [Message, Present].
+test(bad_type, [ setup(oro_reset),
+                 error(domain_error(oro_event_type, foo))
+               ]) :-
+    ev_with_queue(Q, _,
+                  oro_subscribe(myself, foo, on_true, '', ["a b c"],
+                                ev_to_queue(Q, t), _)).
+test(bad_trigger, [ setup(oro_reset),
+                    error(domain_error(oro_event_trigger, sometimes))
+                  ]) :-
+    ev_with_queue(Q, _,
+                  oro_subscribe(myself, fact_checking, sometimes, '', ["a b c"],
+                                ev_to_queue(Q, t), _)).
+test(unknown_model, [ setup(oro_reset),
+                      error(existence_error(agent, nobody))
+                    ]) :-
+    ev_with_queue(Q, _,
+                  oro_subscribe(nobody, fact_checking, on_true, '', ["a b c"],
+                                ev_to_queue(Q, t), _)).
+:- end_tests(events_prolog_api).
+
+ev_watcher_in(Ids, watcher(Id, _, _, _, _, _)) :-
+    memberchk(Id, Ids).
+
+                 /*******************************
+                 *            STRESS            *
+                 *******************************/
+
+%   N clients, each making M changes that toggle its own K facts
+%   `cK_I state on` (one batch add or remove per change); one listener
+%   connection registers, for every fact, three FACT_CHECKING watchers
+%   in this order: ON_TOGGLE, ON_TRUE, ON_FALSE.  Since a subscriber
+%   receives the firings of a change in registration order and changes
+%   in commit order, the listener's events restricted to one fact are
+%   exactly [toggle, true, toggle, false, ...], M pairs.  Meanwhile the
+%   listener sends requests of its own: replies and events share its
+%   socket and must never mix.
+
+ev_stress_params(4, 50, 5).                     % N, M, K
+
+ev_stress(Result) :-
+    ev_stress_params(N, M, K),
+    ev_connected([L], ev_stress_run(L, N, M, K, Result)).
+
+ev_stress_run(L, N, M, K, stress(Statuses, Count, BadFacts, Extra, BadReplies)) :-
+    ev_port(Port),
+    findall(I-J, ( between(1, N, I), between(1, K, J) ), Facts),
+    maplist(ev_stress_register(L), Facts, Watchers),
+    ev_sentinel(L, S),
+    message_queue_create(Done),
+    call_cleanup(
+        ( findall(T, ( between(1, N, I),
+                       thread_create(ev_stress_client(Port, I, M, K, Done), T, [])
+                     ), Threads),
+          Total is N * K * 2 * M,
+          ev_stress_collect(L, Total, Events, BadReplies),
+          length(Events, Count),
+          ev_stress_join(Done, Threads, Statuses),
+          ev_settle(L, L, S, Extra)
+        ),
+        message_queue_destroy(Done)),
+    ev_stress_expected(M, Expected),
+    include(ev_stress_bad(Events, Expected), Watchers, Bad),
+    maplist(ev_stress_fact, Bad, BadFacts).
+
+ev_stress_register(L, I-J, w(I, J, Tg, T, F)) :-
+    format(string(P), "[c~d_~d state on]", [J, I]),
+    ev_register(L, ["FACT_CHECKING", "ON_TOGGLE", P], Tg),
+    ev_register(L, ["FACT_CHECKING", "ON_TRUE", P], T),
+    ev_register(L, ["FACT_CHECKING", "ON_FALSE", P], F).
+
+ev_stress_fact(w(I, J, _, _, _), I-J).
+
+ev_stress_statements(I, K, Text) :-
+    findall(S, ( between(1, K, J),
+                 format(string(S), "c~d_~d state on", [J, I])
+               ), Ss),
+    atomic_list_concat(Ss, ', ', Inner),
+    format(string(Text), "[~w]", [Inner]).
+
+ev_stress_client(Port, I, M, K, Done) :-
+    ev_stress_statements(I, K, Text),
+    catch(setup_call_cleanup(
+              oro_connect(Port, C),
+              ev_stress_changes(C, 1, M, Text, Status),
+              oro_disconnect(C)),
+          E,
+          Status = exception(E)),
+    thread_send_message(Done, done(I, Status)).
+
+ev_stress_changes(C, J, M, Text, Status) :-
+    (   J > M
+    ->  Status = ok
+    ;   (   J mod 2 =:= 1
+        ->  Method = add
+        ;   Method = remove
+        ),
+        oro_call(C, Method, [Text], Reply, 10),
+        (   Reply = ok(_)
+        ->  J1 is J + 1,
+            ev_stress_changes(C, J1, M, Text, Status)
+        ;   Status = failed(J, Reply)
+        )
+    ).
+
+%   ev_stress_collect(+L, +Total, -Events, -BadReplies): read Total
+%   events (Id-Content), fewer if one does not come within 10 s.  Every
+%   50 events the listener also sends a request, whose reply comes
+%   among the events: BadReplies are the replies that are not a
+%   boolean `ok`.
+
+ev_stress_collect(_, 0, [], []) :-
+    !.
+ev_stress_collect(L, N, Events, BadReplies) :-
+    (   N mod 50 =:= 0
+    ->  oro_call(L, check, ["[c1_1 state on]"], Reply, 10),
+        (   memberchk(Reply, [ok("true"), ok("false")])
+        ->  BadReplies = BadReplies1
+        ;   BadReplies = [Reply|BadReplies1]
+        )
+    ;   BadReplies = BadReplies1
+    ),
+    oro_next_event(L, Event, 10),
+    (   Event = event(Id, Content)
+    ->  Events = [Id-Content|Rest],
+        N1 is N - 1,
+        ev_stress_collect(L, N1, Rest, BadReplies1)
+    ;   Events = [],
+        BadReplies1 = []
+    ).
+
+%   ev_stress_join(+Done, +Threads, -Statuses): the clients' statuses,
+%   sorted by client; a client that does not finish within 60 s is
+%   reported as `timeout` and stopped.
+
+ev_stress_join(Done, Threads, Statuses) :-
+    length(Threads, N),
+    ev_stress_done(Done, N, Pairs0),
+    keysort(Pairs0, Pairs),
+    pairs_values(Pairs, Statuses0),
+    (   length(Statuses0, N)
+    ->  Statuses = Statuses0
+    ;   Statuses = [timeout|Statuses0],
+        forall(member(T, Threads),
+               catch(thread_signal(T, throw(ev_stress_timeout)), _, true))
+    ),
+    forall(member(T, Threads), thread_join(T, _)).
+
+ev_stress_done(_, 0, []) :-
+    !.
+ev_stress_done(Done, N, Pairs) :-
+    (   thread_get_message(Done, done(I, Status), [timeout(60)])
+    ->  Pairs = [I-Status|Rest],
+        N1 is N - 1,
+        ev_stress_done(Done, N1, Rest)
+    ;   Pairs = []
+    ).
+
+ev_stress_expected(M, Expected) :-
+    findall(Kinds, ( between(1, M, J),
+                     (   J mod 2 =:= 1
+                     ->  Kinds = [toggle-"", true-""]
+                     ;   Kinds = [toggle-"", false-""]
+                     )
+                   ), Nested),
+    append(Nested, Expected).
+
+ev_stress_bad(Events, Expected, w(_, _, Tg, T, F)) :-
+    findall(Kind-C, ( member(Id-C, Events),
+                      ev_stress_kind(Id, Tg, T, F, Kind)
+                    ), Got),
+    Got \== Expected.
+
+ev_stress_kind(Id, Tg, T, F, Kind) :-
+    (   Id == Tg
+    ->  Kind = toggle
+    ;   Id == T
+    ->  Kind = true
+    ;   Id == F
+    ->  Kind = false
+    ).
+
+:- begin_tests(events_stress,
+               [ setup(ev_start_testsuite),
+                 cleanup(ev_stop)
+               ]).
+
+test(toggles_from_four_clients, [ setup(ev_fresh),
+                                  true(Result == stress([ok, ok, ok, ok], 2000, [], [], []))
+                                ]) :-
+    ev_stress(Result).
+
+:- end_tests(events_stress).
