@@ -67,6 +67,7 @@
             oro_create_agent/2,         % +Name, +Individual
             oro_revise/2,               % +Statements, +Policy
             oro_memory_deadlines/2,     % +Model, -Deadlines
+            oro_memory_sync/0,
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text

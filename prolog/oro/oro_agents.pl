@@ -121,6 +121,10 @@ oro_create_agent(Name, Individual) :-
 %   (`default`, the robot id) and the agents.
 
 oro_agents(Names) :-
+    (   thread_self(oro_watcher)
+    ->  true
+    ;   oro_events_sync                     % agents still being created
+    ),
     findall(N, ( oro_model(N) ; oro_model_alias(N, _) ), Names0),
     sort(Names0, Names).
 
@@ -132,7 +136,7 @@ oro_agents(Names) :-
 %     - method: `add`, `safe_add`,
 %       `retract` or `update` (any case); `revision` and
 %       `safe_update` are not implemented;
-%     - models: a model name, a list of them (unknown names are
+%     - models: a model name or a list of them (unknown names are
 %       skipped; `[]` is every model), `all` (every model); missing:
 %       the robot's;
 %     - memory_profile: for `add`, as oro_add/3.
@@ -199,8 +203,10 @@ revision_models(Policy, Models) :-
     ;   text_lower(Spec, all)
     ->  findall(M, oro_model(M), Models0)
     ;   atom_string(N, Spec),
-        oro_resolve_model(N, M),
-        Models0 = [M]
+        (   catch(oro_resolve_model(N, M), _, fail)
+        ->  Models0 = [M]
+        ;   Models0 = []                    % unknown names are skipped
+        )
     ),
     sort(Models0, Models).
 

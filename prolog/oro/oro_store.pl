@@ -239,9 +239,11 @@ oro_store_assert(Model, Triples, Profile) :-
     oro_graph(Model, mask, Mask),
     maplist(assert_triple(Graph, Mask, Model, Profile), Triples).
 
-%   A long-term triple is asserted once, wherever it is visible from.  A
-%   triple of a shorter profile goes in that profile's graph (where its
-%   lifetime is counted) unless it is already there or lives forever.
+%   A long-term triple is asserted unless it already lives forever (in
+%   the long-term graph or the ontology layer); a copy in a shorter
+%   profile's graph does not count.  A triple of a shorter profile goes
+%   in that profile's graph (where its lifetime is counted) unless it is
+%   already there or lives forever.
 
 assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     note_schema_change(P, O),
@@ -250,7 +252,7 @@ assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     ;   true
     ),
     (   Profile == longterm
-    ->  (   oro_asserted(Model, S, P, O)
+    ->  (   forever(Model, S, P, O)
         ->  true
         ;   rdf_assert(S, P, O, Graph)
         )
