@@ -957,6 +957,10 @@ float_text(X, Text) :-
 %   Escape for the value line.
 
 escape_string(String, Escaped) :-
+    plain_string(String),                   % the usual case: one scan
+    !,
+    Escaped = String.
+escape_string(String, Escaped) :-
     replace_all(String,
                 [ "\\"-"\\\\", "\""-"\\\"", "\n"-"\\n", "\r"-"\\r",
                   "\t"-"\\t" ],
@@ -983,9 +987,16 @@ has_control(String) :-
     ->  true
     ).
 
-controls(Controls) :-
-    numlist(1, 31, Codes),
-    string_codes(Controls, Codes).
+controls("\x1\\x2\\x3\\x4\\x5\\x6\\x7\\x8\\x9\\xa\\xb\\xc\\xd\\xe\\xf\\x10\\x11\\x12\\x13\\x14\\x15\\x16\\x17\\x18\\x19\\x1a\\x1b\\x1c\\x1d\\x1e\\x1f\").                  % the codes 1-31
+
+%   plain_string(+String): nothing in String needs escaping.
+
+plain_string(String) :-
+    specials(Specials),
+    split_string(String, Specials, "", [_]),
+    \+ sub_string(String, _, _, _, "\u0000").
+
+specials("\\\"\x1\\x2\\x3\\x4\\x5\\x6\\x7\\x8\\x9\\xa\\xb\\xc\\xd\\xe\\xf\\x10\\x11\\x12\\x13\\x14\\x15\\x16\\x17\\x18\\x19\\x1a\\x1b\\x1c\\x1d\\x1e\\x1f\").                  % \\, " and the codes 1-31
 
 control_code(Code, [Part|T], T) :-
     (   Code < 32

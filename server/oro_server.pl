@@ -100,9 +100,18 @@ main :-
           )),
     oro_server_port(Server, Port),
     option(host(Host), Options, '127.0.0.1'),
+    (   loopback(Host)
+    ->  true
+    ;   format(user_error, "Warning: listening on ~w: the ORO protocol has no \c
+                            authentication; anyone who can reach this address \c
+                            can read and change the knowledge base.~n", [Host])
+    ),
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
     thread_get_message(oro_server_stop).
+
+loopback(Host) :-
+    memberchk(Host, ['127.0.0.1', localhost, '::1']).
 
 %!  oro_server_start(+Options, -Server) is det.
 %
