@@ -57,6 +57,12 @@
             oro_discriminate/4,         % +Model, +Individuals, -Total, -Best
             oro_discriminants/3,        % +Model, +Individuals, -Discriminants
             oro_partition/4,            % +Model, +Individuals, +Property, -Partition
+            % SPARQL
+            oro_sparql/3,               % +Model, +Text, -Result
+            oro_sparql_json/3,          % +Model, +Text, -JSON
+            oro_sparql_parse/2,         % +Text, -Query
+            oro_query_values/4,         % +Model, +Key, +Text, -Values
+            oro_find/5,                 % +Model, +Var, +Patterns, +Filters, -Values
             % consistency
             oro_consistent/1,           % +Model
             oro_conflict/2,             % +Model, -Conflict
@@ -82,6 +88,7 @@
 :- use_module(oro/oro_memory).
 :- use_module(oro/oro_consistency).
 :- use_module(oro/oro_categorize).
+:- use_module(oro/oro_sparql).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

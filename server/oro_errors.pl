@@ -169,5 +169,11 @@ error_table(domain_error(oro_comparable, kinds(KindA, KindB)), not_comparable,
 error_table(domain_error(oro_comparable, not_individuals), not_comparable,
             'Only the comparison between instances (individuals) is \c
              currently implemented', []).
+error_table(syntax_error(oro_sparql(Message, _Position)), invalid_query,
+            'Error during query parsing ! (com.hp.hpl.jena.query.QueryParseException: ~w)',
+            [Message]).
+error_table(resource_error(oro_query_time_limit(Seconds)), server,
+            'Query time limit exceeded: the query was stopped after ~w s \c
+             (setting oro_sparql:time_limit).', [Seconds]).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

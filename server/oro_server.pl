@@ -13,6 +13,7 @@
 :- use_module('../prolog/oro').
 :- use_module(oro_protocol).
 :- use_module(oro_methods).
+:- use_module(oro_methods_sparql).
 :- use_module(oro_methods_categorization).
 :- use_module(oro_plugins).
 

@@ -69,7 +69,17 @@ cheapest([Pattern], Pattern, []) :-
 cheapest(Patterns, Best, Rest) :-
     map_list_to_pairs(cost, Patterns, Keyed),
     keysort(Keyed, [_-Best|_]),
-    selectchk(Best, Patterns, Rest).
+    without(Patterns, Best, Rest).
+
+%   without(+List, +Elem, -Rest): Rest is List less Elem, compared by
+%   identity (unifying could merge two patterns that share variables).
+
+without([H|T], X, Rest) :-
+    (   H == X
+    ->  Rest = T
+    ;   Rest = [H|Rest1],
+        without(T, X, Rest1)
+    ).
 
 cost(rdf(S, P, O), Cost) :-
     (   nonvar(S), nonvar(O)

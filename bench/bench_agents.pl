@@ -1,0 +1,540 @@
+/*  oro benchmark: agent models and memory profiles.
+
+        swipl bench/bench_agents.pl [--samples=300] [--facts=100000]
+                                    [--time-base=500] [--checkers=4]
+
+    - addForAgent over the socket with 1, 10 and 100 agent models
+      (median and p99 of single-statement adds spread over the agents;
+      add on the robot's model for comparison), and the time to create
+      the agent models;
+    - memory per agent model: process RSS and rdf_db triples before and
+      after creating 100 agents, in process and in the server process;
+    - forgetting: `facts` SHORTTERM facts added in one request, so that
+      they share one deadline (10 time units later); the time from that
+      deadline until they are all gone, and the latency of `check`
+      requests sent meanwhile by concurrent clients (before the
+      deadline, and from the deadline until the facts are gone).  The
+      time base must leave time to add the facts before they expire.
+
+    The agent figures over the socket come from the real server
+    (server/oro_server.pl --port=0) started as a child process; the
+    forgetting figures over the socket from a server started in this
+    process (to read the exact deadline), its clients being threads.
+    Prints tables.
+*/
+
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/../prolog', Lib),
+   asserta(user:file_search_path(library, Lib)),
+   asserta(user:file_search_path(oro_bench, Dir)).
+
+:- use_module(library(oro)).
+:- use_module(library(oro/oro_memory), [oro_memory_sync/0]).
+:- use_module(oro_bench('../server/oro_server')).
+:- use_module(library(process)).
+:- use_module(library(socket)).
+:- use_module(library(readutil)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(aggregate)).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(http/json)).
+:- use_module(library(main), [argv_options/3]).
+
+:- initialization(main, main).
+
+opt_type(samples, samples, nonneg).
+opt_type(facts, facts, nonneg).
+opt_type(time_base, time_base, nonneg).
+opt_type(checkers, checkers, nonneg).
+
+main :-
+    current_prolog_flag(argv, Argv),
+    argv_options(Argv, _, Options),
+    option_value(samples, Options, 300, Samples),
+    option_value(facts, Options, 100000, Facts),
+    option_value(time_base, Options, 500, TimeBase),
+    option_value(checkers, Options, 4, Checkers),
+    machine,
+    bench_add_for_agent(Samples),
+    bench_memory_per_agent(100),
+    bench_forgetting(Facts, TimeBase, Checkers),
+    oro_events_sync,
+    oro_memory_sync.
+
+option_value(Name, Options, Default, Value) :-
+    Term =.. [Name, Value0],
+    (   memberchk(Term, Options)
+    ->  Value = Value0
+    ;   Value = Default
+    ).
+
+machine :-
+    current_prolog_flag(version, V),
+    catch(( read_file_to_string('/proc/cpuinfo', CPU, []),
+            sub_string(CPU, B, _, _, "model name"),
+            sub_string(CPU, B, 80, _, L0),
+            split_string(L0, "\n", "", [Line|_])
+          ), _, Line = "unknown cpu"),
+    format("SWI-Prolog ~w; ~w~n", [V, Line]).
+
+		 /*******************************
+		 *        SERVER PROCESS        *
+		 *******************************/
+
+%   with_server(+Args, -Conn, -Pid, :Goal): run Goal with a connection
+%   to a server child process started with Args.
+
+:- meta_predicate with_server(+, -, -, 0).
+
+with_server(Args, Conn, Pid, Goal) :-
+    absolute_file_name(oro_bench('../server/oro_server.pl'), Server,
+                       [access(read)]),
+    setup_call_cleanup(
+        process_create(path(swipl), [Server, '--port=0'|Args],
+                       [stdout(pipe(Out)), process(Pid)]),
+        ( read_line_to_string(Out, Line),
+          server_port(Line, Port),
+          setup_call_cleanup(
+              connect(Port, Conn),
+              once(Goal),
+              disconnect(Conn))
+        ),
+        ( process_kill(Pid),
+          process_wait(Pid, _),
+          close(Out)
+        )).
+
+server_port(Line, Port) :-
+    split_string(Line, ":", " ", Parts),
+    last(Parts, PortText),
+    number_string(Port, PortText).
+
+connect(Port, conn(Port, In, Out)) :-
+    tcp_connect('127.0.0.1':Port, Pair, []),
+    stream_pair(Pair, In, Out),
+    set_stream(In, encoding(utf8)),
+    set_stream(Out, encoding(utf8)).
+
+disconnect(conn(_, In, Out)) :-
+    catch(close(Out, [force(true)]), _, true),
+    catch(close(In, [force(true)]), _, true).
+
+%   call_value(+Conn, +Method, +Params, -Value): one request that must
+%   answer ok; Value is its value line.  A parameter is text or a list
+%   of statements.
+
+call_value(conn(_, In, Out), Method, Params, Value) :-
+    format(Out, "~w~n", [Method]),
+    forall(member(P, Params), write_param(Out, P)),
+    format(Out, "#end#~n", []),
+    flush_output(Out),
+    read_line_to_string(In, Status),
+    read_line_to_string(In, Value0),
+    (   Status == "ok"
+    ->  read_line_to_string(In, End),
+        (   End == "#end#"
+        ->  Value = Value0
+        ;   throw(bench_failed(Method, End))
+        )
+    ;   read_line_to_string(In, Message),
+        throw(bench_failed(Method, Status, Value0, Message))
+    ).
+
+call_ok(Conn, Method, Params) :-
+    call_value(Conn, Method, Params, _).
+
+write_param(Out, List) :-
+    is_list(List),
+    !,
+    atomic_list_concat(List, ', ', Text),
+    format(Out, "[~w]~n", [Text]).
+write_param(Out, Text) :-
+    format(Out, "~w~n", [Text]).
+
+%   rss_kb(+Pid, -KB): resident set size of a process.
+
+rss_kb(Pid, KB) :-
+    format(atom(File), '/proc/~w/status', [Pid]),
+    read_file_to_string(File, Status, []),
+    sub_string(Status, B, _, _, "VmRSS:"),
+    sub_string(Status, B, 40, _, Line0),
+    split_string(Line0, "\n", "", [Line|_]),
+    split_string(Line, " \t", " \t", Parts),
+    exclude(==(""), Parts, ["VmRSS:", Text|_]),
+    number_string(KB, Text).
+
+self_pid(Pid) :-
+    current_prolog_flag(pid, Pid).
+
+		 /*******************************
+		 *      addForAgent COST        *
+		 *******************************/
+
+bench_add_for_agent(Samples) :-
+    format("~nAgent models over the socket (~d samples each)~n", [Samples]),
+    header,
+    with_server([], Conn, _,
+                forall(member(N, [1, 10, 100]),
+                       add_for_agent_figures(Conn, N, Samples))).
+
+add_for_agent_figures(Conn, N, Samples) :-
+    call_ok(Conn, reset, []),
+    numlist(1, N, Is),
+    maplist(agent_statement, Is, Statements),
+    get_time(T0),
+    call_ok(Conn, add, [Statements]),
+    wait_agents(Conn, N, 30),
+    get_time(T1),
+    Create is (T1 - T0) * 1.0e6 / N,
+    row('create an agent model (each)', N, Create, -, 1.0e6/Create),
+    measure(N, I,
+            call_ok(Conn, findForAgent, [Agent, x, ['ag1 isOn ?x']]),
+            format(atom(Agent), 'ag~d', [I]),
+            First),
+    report('first findForAgent in a model', N, First),
+    measure(Samples, I,
+            call_ok(Conn, addForAgent, [Agent, [S]]),
+            ( K is 1 + I mod N,
+              format(atom(Agent), 'ag~d', [K]),
+              format(atom(S), 'thing~d isOn table~d', [I, K]) ),
+            AddFor),
+    report('addForAgent 1 statement', N, AddFor),
+    measure(Samples, I,
+            call_ok(Conn, findForAgent, [Agent, x, [P]]),
+            ( K is 1 + I mod N,
+              format(atom(Agent), 'ag~d', [K]),
+              format(atom(P), 'thing~d isOn ?x', [I]) ),
+            FindFor),
+    report('findForAgent 1 pattern, 1 answer', N, FindFor),
+    measure(Samples, I,
+            call_ok(Conn, add, [[S]]),
+            format(atom(S), 'robotthing~d isOn table1', [I]),
+            Add),
+    report('add 1 statement (robot model)', N, Add).
+
+agent_statement(I, S) :-
+    format(atom(S), 'ag~d rdf:type Agent', [I]).
+
+%   wait_agents(+Conn, +Count, +Seconds): poll listAgents until it
+%   lists Count agents agN.
+
+wait_agents(Conn, Count, Seconds) :-
+    get_time(Now),
+    Deadline is Now + Seconds,
+    wait_agents_(Conn, Count, Deadline).
+
+wait_agents_(Conn, Count, Deadline) :-
+    call_value(Conn, listAgents, [], Value),
+    agents_listed(Value, N),
+    (   N >= Count
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.005),
+        wait_agents_(Conn, Count, Deadline)
+    ;   throw(bench_failed(listAgents, timeout(N, Count)))
+    ).
+
+%   agents_listed(+Value, -N): the number of `agN` names listAgents
+%   gave.
+
+agents_listed(Value, N) :-
+    atom_string(Atom, Value),
+    atom_json_term(Atom, List, [value_string_as(atom)]),
+    aggregate_all(count, ( member(Name, List),
+                           sub_atom(Name, 0, _, _, ag)
+                         ), N).
+
+		 /*******************************
+		 *      MEMORY PER AGENT        *
+		 *******************************/
+
+bench_memory_per_agent(N) :-
+    format("~nMemory per agent model (~d agents created)~n", [N]),
+    format("~w~t~34|~w~t~16+~w~t~16+~w~n",
+           [where, 'RSS before', 'RSS after', 'per agent']),
+    % In process.
+    oro_init([]),
+    garbage_collect,
+    self_pid(Self),
+    rss_kb(Self, Before),
+    rdf_statistics(triples(TBefore)),
+    rdf_statistics(graphs(GBefore)),
+    numlist(1, N, Is),
+    maplist(agent_statement, Is, Statements),
+    oro_add(myself, Statements),
+    oro_events_sync,
+    oro_agents(Names),
+    length(Names, Count),
+    garbage_collect,
+    rss_kb(Self, After),
+    rdf_statistics(triples(TAfter)),
+    rdf_statistics(graphs(GAfter)),
+    PerAgent is (After - Before) / N,
+    Triples is (TAfter - TBefore - N) / N,
+    Graphs is (GAfter - GBefore) / N,
+    memory_row('in process', Before, After, PerAgent),
+    format("   (~d models listed; ~1f triples and ~1f graphs per agent \c
+            model beside its rdf:type)~n", [Count, Triples, Graphs]),
+    % The server process.
+    with_server([], Conn, Pid,
+                ( call_ok(Conn, stats, []),
+                  rss_kb(Pid, SBefore),
+                  call_ok(Conn, add, [Statements]),
+                  wait_agents(Conn, N, 30),
+                  rss_kb(Pid, SAfter),
+                  SPerAgent is (SAfter - SBefore) / N,
+                  memory_row('server process', SBefore, SAfter, SPerAgent)
+                )).
+
+memory_row(Where, Before, After, PerAgent) :-
+    format("~w~t~34|~d kB~t~16+~d kB~t~16+~1f kB~n",
+           [Where, Before, After, PerAgent]),
+    flush_output.
+
+		 /*******************************
+		 *          FORGETTING          *
+		 *******************************/
+
+bench_forgetting(Facts, TimeBase, Checkers) :-
+    Lifetime is 10 * TimeBase,
+    format("~nForgetting ~D SHORTTERM facts added at once \c
+            (time base ~d ms: lifetime ~d ms)~n", [Facts, TimeBase, Lifetime]),
+    forget_in_process(Facts, TimeBase),
+    forget_socket(Facts, TimeBase, Checkers).
+
+fact_statements(Facts, Statements) :-
+    findall(S, ( between(1, Facts, I),
+                 format(atom(S), 'fact~d benchP benchO', [I])
+               ), Statements).
+
+%   In process: the deadline is known exactly (oro_memory_deadlines/2).
+
+forget_in_process(Facts, TimeBase) :-
+    oro_init([time_base(TimeBase)]),
+    oro_add(myself, ["keeper benchP benchO"]),
+    fact_statements(Facts, Statements),
+    get_time(T0),
+    oro_add(myself, Statements, shortterm),
+    get_time(T1),
+    oro_memory_deadlines(myself, [D0-_-_|_]),
+    Deadline is D0 / 1000,
+    AddRate is Facts / (T1 - T0),
+    format("in process: add ~D SHORTTERM facts in ~3f s (~0f/s); \c
+            deadline ~3f s after the add returned~n",
+           [Facts, T1-T0, AddRate, Deadline-T1]),
+    (   Deadline =< T1
+    ->  format("   the facts expired while being added: use a larger \c
+                --time-base~n")
+    ;   true
+    ),
+    message_queue_create(Queue),
+    flag(bench_stop, _, 0),
+    thread_create(in_process_checker(Queue), Checker, []),
+    wait_gone_in_process(Facts, 30, Gone),
+    flag(bench_stop, _, 1),
+    thread_join(Checker, _),
+    thread_get_message(Queue, latencies(Latencies)),
+    message_queue_destroy(Queue),
+    Forget is Gone - Deadline,
+    format("   all gone ~3f s after the deadline (~0f facts/s)~n",
+           [Forget, Facts / max(0.000001, Forget)]),
+    window_report('in-process check', Latencies, Deadline, Gone),
+    oro_events_sync.
+
+wait_gone_in_process(Facts, Seconds, Gone) :-
+    format(string(First), "fact1 benchP benchO", []),
+    format(string(Last), "fact~d benchP benchO", [Facts]),
+    get_time(Now),
+    Deadline is Now + Seconds,
+    wait_gone_in_process_(First, Last, Deadline, Gone).
+
+wait_gone_in_process_(First, Last, Deadline, Gone) :-
+    (   \+ oro_check(myself, [First]),
+        \+ oro_check(myself, [Last])
+    ->  get_time(Gone)
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.001),
+        wait_gone_in_process_(First, Last, Deadline, Gone)
+    ;   throw(bench_failed(forgetting, timeout))
+    ).
+
+in_process_checker(Queue) :-
+    in_process_checks([], Latencies),
+    thread_send_message(Queue, latencies(Latencies)).
+
+in_process_checks(L0, L) :-
+    (   flag(bench_stop, 1, 1)
+    ->  L = L0
+    ;   get_time(T0),
+        ignore(oro_check(myself, ["keeper benchP benchO"])),
+        get_time(T1),
+        Micros is (T1 - T0) * 1.0e6,
+        sleep(0.001),
+        in_process_checks([T0-Micros|L0], L)
+    ).
+
+%   Over the socket: the server runs in this process (oro_server_start/2)
+%   so that the deadline is known exactly; the clients are threads of
+%   their own, each with its connection.
+
+forget_socket(Facts, TimeBase, Checkers) :-
+    setup_call_cleanup(
+        oro_server_start([port(0), time_base(TimeBase)], Server),
+        ( oro_server_port(Server, Port),
+          setup_call_cleanup(
+              connect(Port, Conn),
+              forget_socket_(Conn, Facts, Checkers),
+              disconnect(Conn))
+        ),
+        oro_server_stop(Server)).
+
+forget_socket_(Conn, Facts, Checkers) :-
+    Conn = conn(Port, _, _),
+    call_ok(Conn, add, [["keeper benchP benchO"]]),
+    fact_statements(Facts, Statements),
+    get_time(T0),
+    call_ok(Conn, add, [Statements, 'SHORTTERM']),
+    get_time(T1),
+    oro_memory_deadlines(myself, [D0-_-_|_]),
+    Deadline is D0 / 1000,
+    format("socket (server in this process): add ~D SHORTTERM facts in \c
+            one request in ~3f s (~0f/s); deadline ~3f s after the reply~n",
+           [Facts, T1-T0, Facts/(T1-T0), Deadline-T1]),
+    message_queue_create(Queue),
+    flag(bench_stop, _, 0),
+    length(Threads, Checkers),
+    maplist(start_socket_checker(Port, Queue), Threads),
+    format(atom(Last), 'fact~d benchP benchO', [Facts]),
+    wait_gone_socket(Conn, ['fact1 benchP benchO', Last], 60, Gone),
+    flag(bench_stop, _, 1),
+    maplist(thread_join, Threads),
+    findall(L, ( between(1, Checkers, _),
+                 thread_get_message(Queue, latencies(L))
+               ), Ls),
+    append(Ls, Latencies),
+    message_queue_destroy(Queue),
+    Forget is Gone - Deadline,
+    format("   all gone ~3f s after the deadline (~0f facts/s), seen over \c
+            the socket; ~d concurrent check clients~n",
+           [Forget, Facts / max(0.000001, Forget), Checkers]),
+    window_report('socket check', Latencies, Deadline, Gone),
+    oro_events_sync.
+
+start_socket_checker(Port, Queue, Thread) :-
+    thread_create(socket_checker(Port, Queue), Thread, []).
+
+socket_checker(Port, Queue) :-
+    setup_call_cleanup(
+        connect(Port, Conn),
+        socket_checks(Conn, [], Latencies),
+        disconnect(Conn)),
+    thread_send_message(Queue, latencies(Latencies)).
+
+socket_checks(Conn, L0, L) :-
+    (   flag(bench_stop, 1, 1)
+    ->  L = L0
+    ;   get_time(T0),
+        call_ok(Conn, check, [['keeper benchP benchO']]),
+        get_time(T1),
+        Micros is (T1 - T0) * 1.0e6,
+        sleep(0.001),
+        socket_checks(Conn, [T0-Micros|L0], L)
+    ).
+
+%   wait_gone_socket(+Conn, +Statements, +Seconds, -Gone): poll each
+%   statement with check until all are false.
+
+wait_gone_socket(Conn, Statements, Seconds, Gone) :-
+    get_time(Now),
+    Deadline is Now + Seconds,
+    wait_gone_socket_(Conn, Statements, Deadline, Gone).
+
+wait_gone_socket_(Conn, Statements, Deadline, Gone) :-
+    (   forall(member(S, Statements),
+               call_value(Conn, check, [[S]], "false"))
+    ->  get_time(Gone)
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.002),
+        wait_gone_socket_(Conn, Statements, Deadline, Gone)
+    ;   throw(bench_failed(forgetting, timeout))
+    ).
+
+%   window_report(+Name, +Latencies, +Deadline, +End): check latencies
+%   (Start-Micros) before the deadline and from the deadline to End.
+
+window_report(Name, Latencies, Deadline, End) :-
+    header,
+    partition(before(Deadline), Latencies, Before, Rest),
+    include(before(End), Rest, During),
+    pairs_values_(Before, B),
+    pairs_values_(During, D),
+    atom_concat(Name, ' before deadline', N1),
+    atom_concat(Name, ' while forgetting', N2),
+    report_or_none(N1, B),
+    report_or_none(N2, D).
+
+before(Time, Start-_) :-
+    Start < Time.
+
+pairs_values_(Pairs, Values) :-
+    findall(V, member(_-V, Pairs), Values).
+
+report_or_none(Name, []) :-
+    !,
+    format("~w~t~34|(no sample)~n", [Name]).
+report_or_none(Name, Times) :-
+    length(Times, N),
+    report(Name, N, Times).
+
+		 /*******************************
+		 *          MEASURING           *
+		 *******************************/
+
+header :-
+    format("~w~t~34|~w~t~12+~w~t~12+~w~t~12+~w~n",
+           [operation, 'agents/n', median, p99, 'per second']).
+
+%   measure(+N, ?I, :Goal, :Prepare, -Times): run Prepare then Goal for
+%   I in 1..N; Times are the Goal's wall times in µs.
+
+:- meta_predicate measure(+, ?, 0, 0, -).
+
+measure(N, I, Goal, Prepare, Times) :-
+    findall(T, ( between(1, N, I),
+                 once(Prepare),
+                 get_time(T0),
+                 once(Goal),
+                 get_time(T1),
+                 T is (T1-T0)*1.0e6
+               ), Times).
+
+report(Name, Size, Times) :-
+    msort(Times, Sorted),
+    length(Sorted, N),
+    M is N // 2,
+    nth0(M, Sorted, Median),
+    P is min(N-1, (N*99) // 100),
+    nth0(P, Sorted, P99),
+    PerSecond is 1.0e6 / Median,
+    row(Name, Size, Median, P99, PerSecond).
+
+row(Name, Size, Median, P99, PerSecond0) :-
+    micros(Median, MText),
+    micros(P99, PText),
+    PerSecond is PerSecond0,
+    format("~w~t~34|~d~t~12+~w~t~12+~w~t~12+~0f~n",
+           [Name, Size, MText, PText, PerSecond]),
+    flush_output.
+
+micros(X, Text) :-
+    (   number(X)
+    ->  (   X >= 10000
+        ->  format(string(Text), "~1f ms", [X/1000])
+        ;   format(string(Text), "~1f us", [X])
+        )
+    ;   Text = "-"
+    ).

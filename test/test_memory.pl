@@ -1,0 +1,714 @@
+:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
+:- use_module(library(plunit)).
+:- use_module(library(oro)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(error)).
+:- use_module(library(settings)).
+:- use_module(library(http/json)).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(oro/oro_memory),
+              [ oro_memory_profile/2,
+                oro_memory_lifetime/2,
+                oro_memory_sync/0
+              ]).
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/oro_test_client', Client),
+   use_module(Client),
+   atom_concat(Dir, '/../server/oro_server', Server),
+   use_module(Server).
+
+/*  Tests for memory profiles (ORO-SPEC §9, add(Set, String) of §6.1,
+    the vectors of §13.12), through the Prolog API (oro_add/3,
+    oro_memory_deadlines/2, oro_memory_sync/0) and over the socket.
+
+    What is checked: SHORTTERM lives 10 time units, EPISODIC 300,
+    LONGTERM and DEFAULT forever; names in any case, unknown ones
+    meaning DEFAULT; a deadline is never earlier than now + lifetime
+    and a fact is never forgotten before it; re-adding a long-term fact
+    as SHORTTERM does not make it forgettable; re-adding a short-term
+    fact restarts its lifetime; a fact added both SHORTTERM and
+    EPISODIC stays until the later deadline; forgetting updates the
+    inferences and fires events (NEW_INSTANCE and FACT_CHECKING
+    ON_FALSE); no reification triples (`rs_...`) are ever visible.
+
+    A small time base (50 ms; 5 ms to see EPISODIC facts go) keeps the
+    tests short.  Waits are on conditions (polling every 20 ms, 5 s
+    at most), never fixed sleeps.  Tests marked blocked/1 show bugs of
+    the implementation: the reason says which.
+
+    Run: cd /work/main && swipl -g run_tests -t halt test/test_memory.pl
+*/
+
+:- dynamic
+    agm_mem_server/1,                   % Server
+    agm_mem_started_time_base/1.        % Milliseconds
+
+
+                 /*******************************
+                 *        PROLOG HELPERS        *
+                 *******************************/
+
+%   agm_mem_fresh(+TimeBase): the common-sense ontology, robot id
+%   ROBOT, the time base in milliseconds.
+
+agm_mem_fresh(TimeBase) :-
+    oro_init([robot_id('ROBOT'), time_base(TimeBase)]).
+
+agm_mem_fresh :-
+    agm_mem_fresh(50).
+
+agm_mem_now(Ms) :-
+    get_time(Now),
+    Ms is Now * 1000.
+
+agm_mem_holds(Model, Statement) :-
+    oro_check(Model, [Statement]).
+
+agm_mem_gone(Model, Statement) :-
+    \+ oro_check(Model, [Statement]).
+
+%   agm_mem_deadlines(+Model, -Deadlines): Deadline-Statement-Profile
+%   with contracted statement text, earliest first.
+
+agm_mem_deadlines(Model, Deadlines) :-
+    oro_memory_deadlines(Model, Deadlines0),
+    maplist(agm_mem_deadline, Deadlines0, Deadlines).
+
+agm_mem_deadline(D-rdf(S, P, O)-Profile, D-Text-Profile) :-
+    maplist(oro_term_text, [S, P, O], Parts),
+    atomic_list_concat(Parts, ' ', Atom),
+    atom_string(Atom, Text).
+
+%   agm_mem_deadline_of(+Model, +Statement, +Profile, -Deadline) is
+%   semidet.
+
+agm_mem_deadline_of(Model, Statement, Profile, Deadline) :-
+    agm_mem_deadlines(Model, Deadlines),
+    memberchk(Deadline-Statement-Profile, Deadlines).
+
+%   agm_mem_statements_with_deadline(+Model, -Statements): sorted.
+
+agm_mem_statements_with_deadline(Model, Statements) :-
+    agm_mem_deadlines(Model, Deadlines),
+    findall(S, member(_-S-_, Deadlines), Statements0),
+    sort(Statements0, Statements).
+
+%   agm_mem_wait_until(:Condition, +Seconds) is semidet: poll Condition
+%   every 20 ms until it holds or Seconds have passed.
+
+:- meta_predicate agm_mem_wait_until(0, +).
+
+agm_mem_wait_until(Condition, Seconds) :-
+    get_time(Now),
+    Deadline is Now + Seconds,
+    agm_mem_wait_until_(Condition, Deadline).
+
+agm_mem_wait_until_(Condition, Deadline) :-
+    (   call(Condition)
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.02),
+        agm_mem_wait_until_(Condition, Deadline)
+    ;   fail
+    ).
+
+%   agm_mem_forgotten(:Gone, +Deadline, -Outcome): wait (5 s at most)
+%   until Gone holds.  Outcome is `after_deadline` if it did not hold
+%   before Deadline (ms since the epoch), early(Ms) if it held Ms
+%   before it, or `never`.
+
+:- meta_predicate agm_mem_forgotten(0, +, -).
+
+agm_mem_forgotten(Gone, Deadline, Outcome) :-
+    (   agm_mem_wait_until(Gone, 5)
+    ->  agm_mem_now(Seen),
+        (   Seen >= Deadline
+        ->  Outcome = after_deadline
+        ;   Early is Deadline - Seen,
+            Outcome = early(Early)
+        )
+    ;   Outcome = never
+    ).
+
+%   agm_mem_wait_after(+Deadline): wait (5 s at most) until the clock
+%   has passed Deadline (ms since the epoch).
+
+agm_mem_wait_after(Deadline) :-
+    agm_mem_wait_until(( agm_mem_now(Now), Now > Deadline ), 5).
+
+%   agm_mem_short_marker(+Model, -Outcome): add `marker is set` as
+%   SHORTTERM and wait until it is forgotten: every short-term fact
+%   added before it is then due too.
+
+agm_mem_short_marker(Model, Outcome) :-
+    oro_add(Model, ["marker is set"], shortterm),
+    agm_mem_deadline_of(Model, "marker is set", shortterm, Deadline),
+    agm_mem_forgotten(agm_mem_gone(Model, "marker is set"), Deadline,
+                      Outcome).
+
+%   agm_mem_event_to(+Queue, +Id, +Content): an oro_subscribe/7 callback
+%   noting when the event came.
+
+agm_mem_event_to(Queue, Id, Content) :-
+    agm_mem_now(Now),
+    thread_send_message(Queue, event(Id, Content, Now)).
+
+%   agm_mem_event_when(+Model, +Type, +Trigger, +Var, +Patterns,
+%   :Goal, -Names, -Outcome): subscribe, run Goal (which
+%   adds what will be forgotten), and wait (5 s at most) for the first
+%   event.  Names is its contracted content, Outcome as for
+%   agm_mem_forgotten/3 for the event's arrival against the deadline of
+%   the first short-term fact of Model.
+
+:- meta_predicate agm_mem_event_when(+, +, +, +, +, 0, -, -).
+
+agm_mem_event_when(Model, Type, Trigger, Var, Patterns, Goal, Names,
+                   Outcome) :-
+    message_queue_create(Queue),
+    setup_call_cleanup(
+        oro_subscribe(Model, Type, Trigger, Var, Patterns,
+                      agm_mem_event_to(Queue), Id),
+        ( once(Goal),
+          oro_memory_deadlines(Model, [Deadline-_-_|_]),
+          (   thread_get_message(Queue, event(Id, Content, When),
+                                 [timeout(5)])
+          ->  maplist(oro_iri_name, Content, Names),
+              (   When >= Deadline
+              ->  Outcome = after_deadline
+              ;   Early is Deadline - When,
+                  Outcome = early(Early)
+              )
+          ;   Names = timeout,
+              Outcome = never
+          )
+        ),
+        ( oro_unsubscribe(Id),
+          message_queue_destroy(Queue)
+        )).
+
+
+                 /*******************************
+                 *      PROFILES AND DEADLINES  *
+                 *******************************/
+
+:- begin_tests(agm_mem_profiles).
+
+test(profile_names, true(Profiles == [ shortterm, shortterm, shortterm,
+                                       episodic, episodic, longterm,
+                                       longterm, longterm, longterm,
+                                       longterm ])) :-
+    maplist(oro_memory_profile,
+            ['SHORTTERM', shortterm, "ShortTerm", 'EPISODIC', "episodic",
+             'LONGTERM', 'DEFAULT', default, bogus, ''],
+            Profiles).
+test(lifetimes, [ setup(agm_mem_fresh(50)),
+                  true(Ls == [500, 15000, none])
+                ]) :-
+    findall(L, ( member(P, [shortterm, episodic, longterm]),
+                 (   oro_memory_lifetime(P, L0)
+                 ->  L = L0
+                 ;   L = none
+                 )
+               ), Ls).
+test(default_time_base, [ setup(oro_init([])),
+                          true(Ls == [10000, 300000])
+                        ]) :-
+    maplist(oro_memory_lifetime, [shortterm, episodic], Ls).
+test(long_term_has_no_deadline, [ setup(agm_mem_fresh),
+                                  true(Ds == [])
+                                ]) :-
+    oro_add(myself, ["a1 p o"]),
+    oro_add(myself, ["a2 p o"], 'LONGTERM'),
+    oro_add(myself, ["a3 p o"], 'DEFAULT'),
+    oro_add(myself, ["a4 p o"], bogus),
+    oro_memory_deadlines(myself, Ds).
+test(short_term_deadline, [ setup(agm_mem_fresh),
+                            true(r(Late, Holds, Before) == r(true, true, true))
+                          ]) :-
+    agm_mem_now(T0),
+    oro_add(myself, ["superman rdf:type Animal"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "superman rdf:type Animal", shortterm, D),
+    agm_bool_mem(D >= T0 + 500, Late),
+    agm_bool_mem(agm_mem_holds(myself, "superman rdf:type Animal"), Holds),
+    agm_mem_now(T1),
+    agm_bool_mem(T1 < D, Before).
+test(episodic_deadline, [ setup(agm_mem_fresh),
+                          true(Late-Holds == true-true)
+                        ]) :-
+    agm_mem_now(T0),
+    oro_add(myself, ["snail eats grass"], episodic),
+    agm_mem_deadline_of(myself, "snail eats grass", episodic, D),
+    agm_bool_mem(D >= T0 + 15000, Late),
+    agm_bool_mem(agm_mem_holds(myself, "snail eats grass"), Holds).
+test(any_case, [ setup(agm_mem_fresh),
+                 true(Ss == ["a1 p o", "a2 p o", "a3 p o"])
+               ]) :-
+    oro_add(myself, ["a1 p o"], "shortterm"),
+    oro_add(myself, ["a2 p o"], 'ShortTerm'),
+    oro_add(myself, ["a3 p o"], "Episodic"),
+    agm_mem_statements_with_deadline(myself, Ss).
+test(short_and_episodic, [ setup(agm_mem_fresh),
+                           true(Ps == [shortterm, episodic])
+                         ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_add(myself, ["f p o"], 'EPISODIC'),
+    agm_mem_deadlines(myself, Ds),
+    findall(P, member(_-"f p o"-P, Ds), Ps).
+test(long_term_then_short_term, [ setup(agm_mem_fresh),
+                                  true(Ds == [])
+                                ]) :-
+    oro_add(myself, ["f p o"]),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_memory_deadlines(myself, Ds).
+test(ontology_fact_as_short_term, [ setup(agm_mem_fresh),
+                                    true(Ds == [])
+                                  ]) :-
+    oro_add(myself, ["Human rdfs:subClassOf EmbodiedAgent"], 'SHORTTERM'),
+    oro_memory_deadlines(myself, Ds).
+test(refresh_moves_deadline, [ setup(agm_mem_fresh),
+                               true(N-Later == 1-true)
+                             ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "f p o", shortterm, D1),
+    agm_mem_now(T0),
+    agm_mem_wait_until(( agm_mem_now(T), T > T0 + 20 ), 5),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadlines(myself, Ds),
+    findall(D, member(D-"f p o"-_, Ds), [D2|Rest]),
+    length([D2|Rest], N),
+    agm_bool_mem(D2 > D1, Later).
+test(no_reification, [ setup(agm_mem_fresh),
+                       true(r(Statements, Rs, Infos) == r([], [], []))
+                     ]) :-
+    oro_add(myself, ["superman rdf:type Animal"], 'SHORTTERM'),
+    oro_add(myself, ["snail eats grass"], 'EPISODIC'),
+    oro_add(myself, ["snail eats grass"], 'SHORTTERM'),
+    agm_mem_find(x, ["?x rdf:type rdf:Statement"], Statements),
+    findall(S, ( rdf(S, _, _),
+                 atom(S),
+                 sub_atom(S, _, _, _, '#rs_')
+               ), Rs0),
+    sort(Rs0, Rs),
+    oro_name_iri(superman, Superman),
+    oro_infos(myself, Superman, Triples),
+    findall(T, ( member(T, Triples),
+                 term_to_atom(T, A),
+                 (   sub_atom(A, _, _, _, 'Statement')
+                 ;   sub_atom(A, _, _, _, rs_)
+                 )
+               ), Infos).
+test(agent_model, [ setup(agm_mem_fresh),
+                    true(G-M == ["hen has teeth"]-[])
+                  ]) :-
+    oro_add(myself, ["gerard rdf:type Human"]),
+    oro_add(gerard, ["hen has teeth"], 'SHORTTERM'),
+    agm_mem_statements_with_deadline(gerard, G),
+    agm_mem_statements_with_deadline(myself, M).
+test(reset_forgets_deadlines, [ setup(agm_mem_fresh),
+                                true(Ds == [])
+                              ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_reset,
+    oro_memory_deadlines(myself, Ds).
+test(bad_batch_no_deadline, [ setup(agm_mem_fresh),
+                              true(Ds == [])
+                            ]) :-
+    catch(oro_add(myself, ["f p o", "g p"], 'SHORTTERM'),
+          error(syntax_error(_), _),
+          true),
+    oro_memory_deadlines(myself, Ds).
+
+:- end_tests(agm_mem_profiles).
+
+agm_mem_find(Var, Patterns, Names) :-
+    oro_find(myself, Var, Patterns, Values),
+    maplist(oro_term_text, Values, Names0),
+    sort(Names0, Names).
+
+:- meta_predicate agm_bool_mem(0, -).
+
+agm_bool_mem(Goal, Bool) :-
+    (   call(Goal)
+    ->  Bool = true
+    ;   Bool = false
+    ).
+
+
+                 /*******************************
+                 *          FORGETTING          *
+                 *******************************/
+
+:- begin_tests(agm_mem_forgetting).
+
+%   A 20 ms time base: SHORTTERM facts live 200 ms.
+
+
+test(short_term_forgotten, [ setup(agm_mem_fresh(20)),
+                             true(Outcome == after_deadline)
+                           ]) :-
+    oro_add(myself, ["superman rdf:type Animal"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "superman rdf:type Animal", shortterm, D),
+    agm_mem_forgotten(agm_mem_gone(myself, "superman rdf:type Animal"), D,
+                      Outcome).
+test(deadline_dropped_once_forgotten, [ setup(agm_mem_fresh(20)),
+                                        true(Outcome-Ds == after_deadline-[])
+                                      ]) :-
+    agm_mem_short_marker(myself, Outcome),
+    oro_memory_sync,
+    oro_memory_deadlines(myself, Ds).
+test(sync_forgets_what_is_due, [ setup(agm_mem_fresh(10)),
+                                 true(Holds == false)
+                               ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "f p o", shortterm, D),
+    agm_mem_wait_after(D),
+    oro_memory_sync,
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+test(long_term_stays, [ setup(agm_mem_fresh(20)),
+                        true(Marker-Holds == after_deadline-true)
+                      ]) :-
+    oro_add(myself, ["f p o"]),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+test(unknown_profile_stays, [ setup(agm_mem_fresh(20)),
+                              true(Marker-Holds == after_deadline-true)
+                            ]) :-
+    oro_add(myself, ["x y z"], bogus),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "x y z"), Holds).
+test(short_term_then_long_term_stays,
+     [ setup(agm_mem_fresh(20)),
+       true(Marker-Holds == after_deadline-true)
+     ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_add(myself, ["f p o"]),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+test(removed_then_long_term_stays, [ setup(agm_mem_fresh(20)),
+                                     true(Marker-Holds == after_deadline-true)
+                                   ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_remove(myself, ["f p o"]),
+    oro_add(myself, ["f p o"]),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+test(refresh, [ setup(agm_mem_fresh(20)),
+                true(Outcome == after_deadline)
+              ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "f p o", shortterm, D1),
+    Half is D1 - 100,
+    agm_mem_wait_after(Half),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "f p o", shortterm, D2),
+    agm_mem_forgotten(agm_mem_gone(myself, "f p o"), D2, Outcome).
+test(short_and_episodic, [ setup(agm_mem_fresh(5)),
+                           true(Marker-Holds-Outcome ==
+                                after_deadline-true-after_deadline)
+                         ]) :-
+    % 5 ms time base: SHORTTERM lives 50 ms, EPISODIC 1.5 s.
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    oro_add(myself, ["f p o"], 'EPISODIC'),
+    agm_mem_deadline_of(myself, "f p o", episodic, D),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds),
+    agm_mem_forgotten(agm_mem_gone(myself, "f p o"), D, Outcome).
+test(episodic_and_short, [ setup(agm_mem_fresh(5)),
+                           true(Marker-Holds-Outcome ==
+                                after_deadline-true-after_deadline)
+                         ]) :-
+    oro_add(myself, ["f p o"], 'EPISODIC'),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "f p o", episodic, D),
+    agm_mem_short_marker(myself, Marker),
+    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds),
+    agm_mem_forgotten(agm_mem_gone(myself, "f p o"), D, Outcome).
+test(inferences_updated, [ setup(agm_mem_fresh(20)),
+                           true(Before-Outcome-After ==
+                                [superman]-after_deadline-[])
+                         ]) :-
+    oro_add(myself, ["Hero rdfs:subClassOf Animal"]),
+    oro_add(myself, ["superman rdf:type Hero"], 'SHORTTERM'),
+    agm_mem_find(x, ["?x rdf:type Animal"], Before),
+    agm_mem_deadline_of(myself, "superman rdf:type Hero", shortterm, D),
+    agm_mem_forgotten(agm_mem_gone(myself, "superman rdf:type Animal"), D,
+                      Outcome),
+    agm_mem_find(x, ["?x rdf:type Animal"], After).
+test(new_instance_on_false, [ setup(agm_mem_fresh(20)),
+                              true(Names-Outcome == [superman]-after_deadline)
+                            ]) :-
+    agm_mem_event_when(myself, new_instance, on_false, a,
+                       ["?a rdf:type Animal"],
+                       oro_add(myself, ["superman rdf:type Animal"],
+                               'SHORTTERM'),
+                       Names, Outcome).
+test(new_instance_on_false_inferred,
+     [ setup(agm_mem_fresh(20)),
+       true(Names-Outcome == [superman]-after_deadline)
+     ]) :-
+    oro_add(myself, ["Hero rdfs:subClassOf Animal"]),
+    agm_mem_event_when(myself, new_instance, on_false, a,
+                       ["?a rdf:type Animal"],
+                       oro_add(myself, ["superman rdf:type Hero"],
+                               'SHORTTERM'),
+                       Names, Outcome).
+test(fact_checking_on_false, [ setup(agm_mem_fresh(20)),
+                               true(Names-Outcome == []-after_deadline)
+                             ]) :-
+    agm_mem_event_when(myself, fact_checking, on_false, '',
+                       ["superman rdf:type Animal"],
+                       oro_add(myself, ["superman rdf:type Animal"],
+                               'SHORTTERM'),
+                       Names, Outcome).
+test(agent_model, [ setup(agm_mem_fresh(20)),
+                    true(Outcome-Robot == after_deadline-true)
+                  ]) :-
+    oro_add(myself, ["gerard rdf:type Human", "hen has teeth"]),
+    oro_add(gerard, ["hen has teeth"], 'SHORTTERM'),
+    agm_mem_deadline_of(gerard, "hen has teeth", shortterm, D),
+    agm_mem_forgotten(agm_mem_gone(gerard, "hen has teeth"), D, Outcome),
+    agm_bool_mem(agm_mem_holds(myself, "hen has teeth"), Robot).
+test(agent_model_event, [ setup(agm_mem_fresh(20)),
+                          true(Names-Outcome == [hen]-after_deadline)
+                        ]) :-
+    oro_add(myself, ["gerard rdf:type Human"]),
+    oro_events_sync,
+    agm_mem_event_when(gerard, new_instance, on_false, x, ["?x has teeth"],
+                       oro_add(gerard, ["hen has teeth"], 'SHORTTERM'),
+                       Names, Outcome).
+
+:- end_tests(agm_mem_forgetting).
+
+
+                 /*******************************
+                 *        SOCKET HELPERS        *
+                 *******************************/
+
+%   agm_mem_start: a server with the common-sense ontology, robot id
+%   ROBOT and a 50 ms time base (noted as set by the server, then
+%   forced to 50 ms whatever it was).
+
+agm_mem_start :-
+    agm_mem_stop,
+    oro_server_start([ port(0), host('127.0.0.1'), commonsense(true),
+                       robot_id('ROBOT'), time_base(50)
+                     ], Server),
+    setting(oro_memory:time_base, TimeBase),
+    retractall(agm_mem_started_time_base(_)),
+    assertz(agm_mem_started_time_base(TimeBase)),
+    set_setting(oro_memory:time_base, 50),
+    assertz(agm_mem_server(Server)).
+
+agm_mem_stop :-
+    forall(retract(agm_mem_server(Server)),
+           ( agm_mem_wait_connections(Server),
+             oro_events_sync,
+             oro_server_stop(Server)
+           )).
+
+agm_mem_wait_connections(Server) :-
+    (   is_dict(Server),
+        get_dict(pool, Server, Pool)
+    ->  ignore(agm_mem_wait_until(agm_mem_pool_idle(Pool), 10))
+    ;   true
+    ).
+
+agm_mem_pool_idle(Pool) :-
+    catch(thread_pool_property(Pool, running(0)), _, true).
+
+agm_mem_port(Port) :-
+    agm_mem_server(Server),
+    !,
+    oro_server_port(Server, Port).
+
+:- meta_predicate agm_mem_connected(-, 0).
+
+agm_mem_connected(Conn, Goal) :-
+    agm_mem_port(Port),
+    setup_call_cleanup(
+        oro_connect(Port, Conn),
+        once(Goal),
+        oro_disconnect(Conn)).
+
+agm_mem_call(Method, Params, Reply) :-
+    agm_mem_connected(Conn, oro_call(Conn, Method, Params, Reply)).
+
+agm_mem_ok(Method, Params) :-
+    agm_mem_call(Method, Params, Reply),
+    (   Reply = ok(_)
+    ->  true
+    ;   throw(agm_mem_unexpected_reply(Method-Params, Reply))
+    ).
+
+agm_mem_server_fresh :-
+    agm_mem_ok(reset, []).
+
+%   agm_mem_socket_check(+Pattern, -Reply): check over the socket.
+
+agm_mem_socket_check(Pattern, Reply) :-
+    agm_mem_call(check, [Pattern], Reply).
+
+agm_mem_socket_gone(Pattern) :-
+    agm_mem_socket_check(Pattern, ok("false")).
+
+%   agm_mem_socket_forgotten(+Pattern, +Statement, -Outcome): poll check
+%   over the socket until Pattern is false; Outcome against the
+%   short-term deadline of Statement in the robot's model.
+
+agm_mem_socket_forgotten(Pattern, Statement, Outcome) :-
+    (   agm_mem_deadline_of(myself, Statement, shortterm, D)
+    ->  agm_mem_forgotten(agm_mem_socket_gone(Pattern), D, Outcome)
+    ;   Outcome = no_deadline
+    ).
+
+agm_mem_socket_forgotten_by(Deadlines, Pattern, Statement, Outcome) :-
+    (   memberchk(D-Statement-shortterm, Deadlines)
+    ->  agm_mem_forgotten(agm_mem_socket_gone(Pattern), D, Outcome)
+    ;   Outcome = no_deadline
+    ).
+
+agm_mem_socket_marker(Outcome) :-
+    agm_mem_ok(add, ['[marker is set]', 'SHORTTERM']),
+    agm_mem_socket_forgotten('[marker is set]', "marker is set", Outcome).
+
+agm_mem_json(Line, Value) :-
+    setup_call_cleanup(
+        open_string(Line, In),
+        json_read_dict(In, Value, [value_string_as(string)]),
+        close(In)).
+
+agm_mem_set_call(Method, Params, Set) :-
+    agm_mem_call(Method, Params, Reply),
+    (   Reply = ok(Line)
+    ->  agm_mem_json(Line, List),
+        msort(List, Set)
+    ;   throw(agm_mem_unexpected_reply(Method-Params, Reply))
+    ).
+
+agm_mem_rs_name(Name) :-
+    (   sub_string(Name, _, _, _, "rs_")
+    ;   sub_string(Name, _, _, _, "Statement")
+    ),
+    !.
+
+
+                 /*******************************
+                 *     §13.12 OVER THE SOCKET   *
+                 *******************************/
+
+:- begin_tests(agm_mem_socket,
+               [ setup(agm_mem_start),
+                 cleanup(agm_mem_stop)
+               ]).
+
+test(time_base_option, true(TimeBase == 50)) :-
+    agm_mem_started_time_base(TimeBase).
+test(vector_13_12, [ setup(agm_mem_server_fresh),
+                     true(r(Add, Check, Outcome, Event) ==
+                          r(ok(""), ok("true"), after_deadline,
+                            "[\"superman\"]"))
+                   ]) :-
+    agm_mem_connected(Conn,
+                      ( oro_call(Conn, registerEvent,
+                                 ['NEW_INSTANCE', 'ON_FALSE', a,
+                                  '[?a rdf:type Animal]'], ok(_)),
+                        oro_call(Conn, add, ['[superman rdf:type Animal]',
+                                             'SHORTTERM'], Add),
+                        oro_call(Conn, check, ['[superman rdf:type Animal]'],
+                                 Check),
+                        agm_mem_socket_forgotten('[superman rdf:type Animal]',
+                                                 "superman rdf:type Animal",
+                                                 Outcome),
+                        oro_next_event(Conn, E, 5)
+                      )),
+    (   E = event(_, Event)
+    ->  true
+    ;   Event = E
+    ).
+test(fact_checking_on_false, [ setup(agm_mem_server_fresh),
+                               true(Event == "")
+                             ]) :-
+    agm_mem_connected(Conn,
+                      ( oro_call(Conn, registerEvent,
+                                 ['FACT_CHECKING', 'ON_FALSE',
+                                  '[superman rdf:type Animal]'], ok(_)),
+                        oro_call(Conn, add, ['[superman rdf:type Animal]',
+                                             'SHORTTERM'], ok(_)),
+                        oro_next_event(Conn, E, 5)
+                      )),
+    (   E = event(_, Event)
+    ->  true
+    ;   Event = E
+    ).
+test(episodic_survives, [ setup(agm_mem_server_fresh),
+                          true(r(Marker, Check, Late) ==
+                               r(after_deadline, ok("true"), true))
+                        ]) :-
+    agm_mem_now(T0),
+    agm_mem_ok(add, ['[snail eats grass]', 'EPISODIC']),
+    agm_mem_socket_marker(Marker),
+    agm_mem_socket_check('[snail eats grass]', Check),
+    agm_mem_deadline_of(myself, "snail eats grass", episodic, D),
+    agm_bool_mem(D >= T0 + 300 * 50, Late).
+test(unknown_profile_is_default, [ setup(agm_mem_server_fresh),
+                                   true(r(Marker, Check, Ds) ==
+                                        r(after_deadline, ok("true"), []))
+                                 ]) :-
+    agm_mem_ok(add, ['[x y z]', bogus]),
+    oro_memory_deadlines(myself, Ds),
+    agm_mem_socket_marker(Marker),
+    agm_mem_socket_check('[x y z]', Check).
+test(long_term_profiles, [ setup(agm_mem_server_fresh),
+                           true(r(Marker, Check, Ds) ==
+                                r(after_deadline, ok("true"), []))
+                         ]) :-
+    agm_mem_ok(add, ['[a1 p o]', 'LONGTERM']),
+    agm_mem_ok(add, ['[a2 p o]', 'default']),
+    agm_mem_ok(add, ['[a3 p o]', 'LongTerm']),
+    agm_mem_ok(add, ['[a1 p o, a2 p o, a3 p o]', 'SHORTTERM']),
+    oro_memory_deadlines(myself, Ds),
+    agm_mem_socket_marker(Marker),
+    agm_mem_socket_check('[a1 p o, a2 p o, a3 p o]', Check).
+test(any_case, [ setup(agm_mem_server_fresh),
+                 true(Ss-Outcomes == ["a1 p o", "a2 p o", "a3 p o"]-
+                                     [after_deadline, after_deadline,
+                                      after_deadline])
+               ]) :-
+    agm_mem_ok(add, ['[a1 p o]', shortterm]),
+    agm_mem_ok(add, ['[a2 p o]', 'ShortTerm']),
+    agm_mem_ok(add, ['[a3 p o]', 'SHORTTERM']),
+    agm_mem_deadlines(myself, Deadlines),
+    findall(S, member(_-S-shortterm, Deadlines), Ss0),
+    sort(Ss0, Ss),
+    maplist(agm_mem_socket_forgotten_by(Deadlines),
+            ['[a1 p o]', '[a2 p o]', '[a3 p o]'],
+            ["a1 p o", "a2 p o", "a3 p o"],
+            Outcomes).
+test(no_reification_visible, [ setup(agm_mem_server_fresh),
+                               true(r(Statements, Subjects, Infos) == r([], [], []))
+                             ]) :-
+    agm_mem_ok(add, ['[superman rdf:type Animal]', 'SHORTTERM']),
+    agm_mem_ok(add, ['[snail eats grass]', 'EPISODIC']),
+    agm_mem_set_call(find, [x, '[?x rdf:type rdf:Statement]'], Statements),
+    agm_mem_set_call(find, [s, '[?s ?p ?o]'], All),
+    include(agm_mem_rs_name, All, Subjects),
+    agm_mem_set_call(getInfos, [superman], AllInfos),
+    include(agm_mem_rs_name, AllInfos, Infos).
+test(short_term_for_agent, [ setup(agm_mem_server_fresh),
+                             true(r(Found, Gone, Robot) ==
+                                  r(ok("[\"hen\"]"), true, ok("true")))
+                           ]) :-
+    agm_mem_ok(add, ['[gerard rdf:type Human, hen has teeth]']),
+    agm_mem_ok(addForAgent, [gerard, '[hen has teeth]', 'SHORTTERM']),
+    agm_mem_call(findForAgent, [gerard, x, '[?x has teeth]'], Found),
+    agm_bool_mem(agm_mem_wait_until(
+                     agm_mem_call(findForAgent, [gerard, x, '[?x has teeth]'],
+                                  ok("[]")),
+                     5),
+                 Gone),
+    agm_mem_socket_check('[hen has teeth]', Robot).
+
+:- end_tests(agm_mem_socket).
