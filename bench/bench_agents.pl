@@ -31,15 +31,15 @@
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_memory), [oro_memory_sync/0]).
 :- use_module(oro_bench('../server/oro_server')).
-:- use_module(library(process)).
-:- use_module(library(socket)).
 :- use_module(library(readutil)).
+:- use_module(library(option)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(aggregate)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(http/json)).
 :- use_module(library(main), [argv_options/3]).
+:- use_module(bench_common).
 
 :- initialization(main, main).
 
@@ -51,32 +51,16 @@ opt_type(checkers, checkers, nonneg).
 main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
-    option_value(samples, Options, 300, Samples),
-    option_value(facts, Options, 100000, Facts),
-    option_value(time_base, Options, 500, TimeBase),
-    option_value(checkers, Options, 4, Checkers),
-    machine,
+    option(samples(Samples), Options, 300),
+    option(facts(Facts), Options, 100000),
+    option(time_base(TimeBase), Options, 500),
+    option(checkers(Checkers), Options, 4),
+    bench_machine,
     bench_add_for_agent(Samples),
     bench_memory_per_agent(100),
     bench_forgetting(Facts, TimeBase, Checkers),
     oro_events_sync,
     oro_memory_sync.
-
-option_value(Name, Options, Default, Value) :-
-    Term =.. [Name, Value0],
-    (   memberchk(Term, Options)
-    ->  Value = Value0
-    ;   Value = Default
-    ).
-
-machine :-
-    current_prolog_flag(version, V),
-    catch(( read_file_to_string('/proc/cpuinfo', CPU, []),
-            sub_string(CPU, B, _, _, "model name"),
-            sub_string(CPU, B, 80, _, L0),
-            split_string(L0, "\n", "", [Line|_])
-          ), _, Line = "unknown cpu"),
-    format("SWI-Prolog ~w; ~w~n", [V, Line]).
 
 		 /*******************************
 		 *        SERVER PROCESS        *
@@ -88,69 +72,8 @@ machine :-
 :- meta_predicate with_server(+, -, -, 0).
 
 with_server(Args, Conn, Pid, Goal) :-
-    absolute_file_name(oro_bench('../server/oro_server.pl'), Server,
-                       [access(read)]),
-    setup_call_cleanup(
-        process_create(path(swipl), [Server, '--port=0'|Args],
-                       [stdout(pipe(Out)), process(Pid)]),
-        ( read_line_to_string(Out, Line),
-          server_port(Line, Port),
-          setup_call_cleanup(
-              connect(Port, Conn),
-              once(Goal),
-              disconnect(Conn))
-        ),
-        ( process_kill(Pid),
-          process_wait(Pid, _),
-          close(Out)
-        )).
-
-server_port(Line, Port) :-
-    split_string(Line, ":", " ", Parts),
-    last(Parts, PortText),
-    number_string(Port, PortText).
-
-connect(Port, conn(Port, In, Out)) :-
-    tcp_connect('127.0.0.1':Port, Pair, []),
-    stream_pair(Pair, In, Out),
-    set_stream(In, encoding(utf8)),
-    set_stream(Out, encoding(utf8)).
-
-disconnect(conn(_, In, Out)) :-
-    catch(close(Out, [force(true)]), _, true),
-    catch(close(In, [force(true)]), _, true).
-
-%   call_value(+Conn, +Method, +Params, -Value): one request that must
-%   answer ok; Value is its value line.  A parameter is text or a list
-%   of statements.
-
-call_value(conn(_, In, Out), Method, Params, Value) :-
-    format(Out, "~w~n", [Method]),
-    forall(member(P, Params), write_param(Out, P)),
-    format(Out, "#end#~n", []),
-    flush_output(Out),
-    read_line_to_string(In, Status),
-    read_line_to_string(In, Value0),
-    (   Status == "ok"
-    ->  read_line_to_string(In, End),
-        (   End == "#end#"
-        ->  Value = Value0
-        ;   throw(bench_failed(Method, End))
-        )
-    ;   read_line_to_string(In, Message),
-        throw(bench_failed(Method, Status, Value0, Message))
-    ).
-
-call_ok(Conn, Method, Params) :-
-    call_value(Conn, Method, Params, _).
-
-write_param(Out, List) :-
-    is_list(List),
-    !,
-    atomic_list_concat(List, ', ', Text),
-    format(Out, "[~w]~n", [Text]).
-write_param(Out, Text) :-
-    format(Out, "~w~n", [Text]).
+    bench_with_server(Args, Port, Pid,
+                      bench_with_connection(Port, Conn, Goal)).
 
 %   rss_kb(+Pid, -KB): resident set size of a process.
 
@@ -173,44 +96,46 @@ self_pid(Pid) :-
 
 bench_add_for_agent(Samples) :-
     format("~nAgent models over the socket (~d samples each)~n", [Samples]),
-    header,
+    bench_header('agents/n'),
     with_server([], Conn, _,
                 forall(member(N, [1, 10, 100]),
                        add_for_agent_figures(Conn, N, Samples))).
 
 add_for_agent_figures(Conn, N, Samples) :-
-    call_ok(Conn, reset, []),
+    bench_call(Conn, reset, []),
     numlist(1, N, Is),
     maplist(agent_statement, Is, Statements),
     get_time(T0),
-    call_ok(Conn, add, [Statements]),
+    bench_call(Conn, add, [Statements]),
     wait_agents(Conn, N, 30),
     get_time(T1),
     Create is (T1 - T0) * 1.0e6 / N,
     row('create an agent model (each)', N, Create, -, 1.0e6/Create),
-    measure(N, I,
-            call_ok(Conn, findForAgent, [Agent, x, ['ag1 isOn ?x']]),
-            format(atom(Agent), 'ag~d', [I]),
-            First),
+    bench_measure(N, I,
+                  bench_call(Conn, findForAgent, [Agent, x, ['ag1 isOn ?x']]),
+                  format(atom(Agent), 'ag~d', [I]),
+                  First),
     report('first findForAgent in a model', N, First),
-    measure(Samples, I,
-            call_ok(Conn, addForAgent, [Agent, [S]]),
-            ( K is 1 + I mod N,
-              format(atom(Agent), 'ag~d', [K]),
-              format(atom(S), 'thing~d isOn table~d', [I, K]) ),
-            AddFor),
+    bench_measure(Samples, I,
+                  bench_call(Conn, addForAgent, [Agent, [S]]),
+                  ( K is 1 + I mod N,
+                    format(atom(Agent), 'ag~d', [K]),
+                    format(atom(S), 'thing~d isOn table~d', [I, K])
+                  ),
+                  AddFor),
     report('addForAgent 1 statement', N, AddFor),
-    measure(Samples, I,
-            call_ok(Conn, findForAgent, [Agent, x, [P]]),
-            ( K is 1 + I mod N,
-              format(atom(Agent), 'ag~d', [K]),
-              format(atom(P), 'thing~d isOn ?x', [I]) ),
-            FindFor),
+    bench_measure(Samples, I,
+                  bench_call(Conn, findForAgent, [Agent, x, [P]]),
+                  ( K is 1 + I mod N,
+                    format(atom(Agent), 'ag~d', [K]),
+                    format(atom(P), 'thing~d isOn ?x', [I])
+                  ),
+                  FindFor),
     report('findForAgent 1 pattern, 1 answer', N, FindFor),
-    measure(Samples, I,
-            call_ok(Conn, add, [[S]]),
-            format(atom(S), 'robotthing~d isOn table1', [I]),
-            Add),
+    bench_measure(Samples, I,
+                  bench_call(Conn, add, [[S]]),
+                  format(atom(S), 'robotthing~d isOn table1', [I]),
+                  Add),
     report('add 1 statement (robot model)', N, Add).
 
 agent_statement(I, S) :-
@@ -225,7 +150,7 @@ wait_agents(Conn, Count, Seconds) :-
     wait_agents_(Conn, Count, Deadline).
 
 wait_agents_(Conn, Count, Deadline) :-
-    call_value(Conn, listAgents, [], Value),
+    bench_call(Conn, listAgents, [], Value),
     agents_listed(Value, N),
     (   N >= Count
     ->  true
@@ -279,9 +204,9 @@ bench_memory_per_agent(N) :-
             model beside its rdf:type)~n", [Count, Triples, Graphs]),
     % The server process.
     with_server([], Conn, Pid,
-                ( call_ok(Conn, stats, []),
+                ( bench_call(Conn, stats, []),
                   rss_kb(Pid, SBefore),
-                  call_ok(Conn, add, [Statements]),
+                  bench_call(Conn, add, [Statements]),
                   wait_agents(Conn, N, 30),
                   rss_kb(Pid, SAfter),
                   SPerAgent is (SAfter - SBefore) / N,
@@ -384,19 +309,16 @@ forget_socket(Facts, TimeBase, Checkers) :-
     setup_call_cleanup(
         oro_server_start([port(0), time_base(TimeBase)], Server),
         ( oro_server_port(Server, Port),
-          setup_call_cleanup(
-              connect(Port, Conn),
-              forget_socket_(Conn, Facts, Checkers),
-              disconnect(Conn))
+          bench_with_connection(Port, Conn,
+                                forget_socket_(Conn, Port, Facts, Checkers))
         ),
         oro_server_stop(Server)).
 
-forget_socket_(Conn, Facts, Checkers) :-
-    Conn = conn(Port, _, _),
-    call_ok(Conn, add, [["keeper benchP benchO"]]),
+forget_socket_(Conn, Port, Facts, Checkers) :-
+    bench_call(Conn, add, [["keeper benchP benchO"]]),
     fact_statements(Facts, Statements),
     get_time(T0),
-    call_ok(Conn, add, [Statements, 'SHORTTERM']),
+    bench_call(Conn, add, [Statements, 'SHORTTERM']),
     get_time(T1),
     oro_memory_deadlines(myself, [D0-_-_|_]),
     Deadline is D0 / 1000,
@@ -427,17 +349,15 @@ start_socket_checker(Port, Queue, Thread) :-
     thread_create(socket_checker(Port, Queue), Thread, []).
 
 socket_checker(Port, Queue) :-
-    setup_call_cleanup(
-        connect(Port, Conn),
-        socket_checks(Conn, [], Latencies),
-        disconnect(Conn)),
+    bench_with_connection(Port, Conn,
+                          socket_checks(Conn, [], Latencies)),
     thread_send_message(Queue, latencies(Latencies)).
 
 socket_checks(Conn, L0, L) :-
     (   flag(bench_stop, 1, 1)
     ->  L = L0
     ;   get_time(T0),
-        call_ok(Conn, check, [['keeper benchP benchO']]),
+        bench_call(Conn, check, [['keeper benchP benchO']]),
         get_time(T1),
         Micros is (T1 - T0) * 1.0e6,
         sleep(0.001),
@@ -454,7 +374,7 @@ wait_gone_socket(Conn, Statements, Seconds, Gone) :-
 
 wait_gone_socket_(Conn, Statements, Deadline, Gone) :-
     (   forall(member(S, Statements),
-               call_value(Conn, check, [[S]], "false"))
+               bench_call(Conn, check, [[S]], "false"))
     ->  get_time(Gone)
     ;   get_time(Now),
         Now < Deadline
@@ -467,7 +387,7 @@ wait_gone_socket_(Conn, Statements, Deadline, Gone) :-
 %   (Start-Micros) before the deadline and from the deadline to End.
 
 window_report(Name, Latencies, Deadline, End) :-
-    header,
+    bench_header('agents/n'),
     partition(before(Deadline), Latencies, Before, Rest),
     include(before(End), Rest, During),
     pairs_values_(Before, B),
@@ -494,47 +414,10 @@ report_or_none(Name, Times) :-
 		 *          MEASURING           *
 		 *******************************/
 
-header :-
-    format("~w~t~34|~w~t~12+~w~t~12+~w~t~12+~w~n",
-           [operation, 'agents/n', median, p99, 'per second']).
-
-%   measure(+N, ?I, :Goal, :Prepare, -Times): run Prepare then Goal for
-%   I in 1..N; Times are the Goal's wall times in µs.
-
-:- meta_predicate measure(+, ?, 0, 0, -).
-
-measure(N, I, Goal, Prepare, Times) :-
-    findall(T, ( between(1, N, I),
-                 once(Prepare),
-                 get_time(T0),
-                 once(Goal),
-                 get_time(T1),
-                 T is (T1-T0)*1.0e6
-               ), Times).
+%   Times in the tables switch to milliseconds from 10 ms on.
 
 report(Name, Size, Times) :-
-    msort(Times, Sorted),
-    length(Sorted, N),
-    M is N // 2,
-    nth0(M, Sorted, Median),
-    P is min(N-1, (N*99) // 100),
-    nth0(P, Sorted, P99),
-    PerSecond is 1.0e6 / Median,
-    row(Name, Size, Median, P99, PerSecond).
+    bench_report(Name, Size, Times, [units(auto)]).
 
-row(Name, Size, Median, P99, PerSecond0) :-
-    micros(Median, MText),
-    micros(P99, PText),
-    PerSecond is PerSecond0,
-    format("~w~t~34|~d~t~12+~w~t~12+~w~t~12+~0f~n",
-           [Name, Size, MText, PText, PerSecond]),
-    flush_output.
-
-micros(X, Text) :-
-    (   number(X)
-    ->  (   X >= 10000
-        ->  format(string(Text), "~1f ms", [X/1000])
-        ;   format(string(Text), "~1f us", [X])
-        )
-    ;   Text = "-"
-    ).
+row(Name, Size, Median, P99, PerSecond) :-
+    bench_row(Name, Size, Median, P99, PerSecond, [units(auto)]).

@@ -16,17 +16,17 @@
 
 :- prolog_load_context(directory, Dir),
    atom_concat(Dir, '/../prolog', Lib),
-   asserta(user:file_search_path(library, Lib)),
-   asserta(user:file_search_path(oro_bench, Dir)).
+   asserta(user:file_search_path(library, Lib)).
 
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_categorize)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(option)).
 :- use_module(library(random)).
-:- use_module(library(readutil)).
 :- use_module(library(main), [argv_options/3]).
+:- use_module(bench_common).
 :- prolog_load_context(directory, Dir),
    atom_concat(Dir, '/../server/oro_server', Server),
    use_module(Server),
@@ -36,17 +36,14 @@
 :- initialization(main, main).
 
 opt_type(sizes, sizes, term).
-opt_type(runs, runs, positive_integer).
+opt_type(runs, runs, natural).
 
 main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
-    option_sizes(Options, Sizes),
-    (   memberchk(runs(Runs), Options)
-    ->  true
-    ;   Runs = 15
-    ),
-    machine,
+    bench_list_option(sizes(Sizes), Options, [10, 100, 1000]),
+    option(runs(Runs), Options, 15),
+    bench_machine,
     oro_server_start([port(0), host('127.0.0.1')], Server),
     oro_server_port(Server, Port),
     format("~n~w~t~30|~w~t~12+~w~t~12+~w~t~12+~w~t~12+~w~n",
@@ -54,26 +51,6 @@ main :-
     forall(member(N, Sizes),
            bench_size(Port, N, Runs)),
     oro_server_stop(Server).
-
-option_sizes(Options, Sizes) :-
-    (   memberchk(sizes(Term), Options)
-    ->  (   integer(Term)
-        ->  Sizes = [Term]
-        ;   Term = (A,B)
-        ->  comma_list((A,B), Sizes)
-        ;   Sizes = Term
-        )
-    ;   Sizes = [10, 100, 1000]
-    ).
-
-machine :-
-    current_prolog_flag(version, V),
-    catch(( read_file_to_string('/proc/cpuinfo', CPU, []),
-            sub_string(CPU, B, _, _, "model name"),
-            sub_string(CPU, B, 80, _, L0),
-            split_string(L0, "\n", "", [Line|_])
-          ), _, Line = "unknown cpu"),
-    format("SWI-Prolog ~w; ~w~n", [V, Line]).
 
 		 /*******************************
 		 *          THE WORLD           *
@@ -155,7 +132,9 @@ ok_call(Conn, Method, Params) :-
     oro_call(Conn, Method, Params, Reply),
     Reply = ok(_).
 
-:- meta_predicate row(+, +, +, +, +, 0).
+:- meta_predicate
+    row(+, +, +, +, +, 0),
+    time_once(0, -).
 
 row(Name, N, Triples, NBest, Runs, Goal) :-
     findall(T, ( between(1, Runs, _), time_once(Goal, T) ), Ts),
@@ -163,16 +142,17 @@ row(Name, N, Triples, NBest, Runs, Goal) :-
     percentile(Sorted, 50, Median),
     percentile(Sorted, 90, P90),
     format("~w~t~30|~d~t~12+~d~t~12+~w~t~12+~3f ms~t~12+~3f ms~n",
-           [Name, N, Triples, NBest, Median*1000, P90*1000]).
+           [Name, N, Triples, NBest, Median/1000, P90/1000]).
 
-time_once(Goal, T) :-
-    get_time(T0),
-    (   call(Goal)
+%   time_once(:Goal, -Micros): bench_time/2, but Goal must succeed.
+
+time_once(Goal, Micros) :-
+    (   bench_time(Goal, Micros)
     ->  true
     ;   throw(bench_failed(Goal))
-    ),
-    get_time(T1),
-    T is T1 - T0.
+    ).
+
+%   percentile(+Sorted, +P, -X): nearest rank.
 
 percentile(Sorted, P, X) :-
     length(Sorted, Len),

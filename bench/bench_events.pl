@@ -32,158 +32,48 @@
     processed every change before it.
 */
 
-:- use_module(library(process)).
-:- use_module(library(socket)).
-:- use_module(library(readutil)).
+:- use_module(library(option)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(main), [argv_options/3]).
+:- use_module(bench_common).
 
 :- initialization(main, main).
 
 opt_type(samples, samples, nonneg).
 opt_type(levels, levels, term).
 
-:- dynamic bench_dir/1.
-
-:- prolog_load_context(directory, Dir),
-   retractall(bench_dir(_)),
-   assertz(bench_dir(Dir)).
-
 main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
-    (   memberchk(samples(Samples), Options)
-    ->  true
-    ;   Samples = 200
-    ),
-    option_levels(Options, Levels),
-    machine,
-    with_server(Port, bench(Port, Samples, Levels)).
+    option(samples(Samples), Options, 200),
+    bench_list_option(levels(Levels), Options, [1, 100, 1000, 1000-other]),
+    bench_machine,
+    bench_with_server([], Port, _, bench(Port, Samples, Levels)).
 
-option_levels(Options, Levels) :-
-    (   memberchk(levels(Term), Options)
-    ->  (   integer(Term)
-        ->  Levels = [Term]
-        ;   Term = (_,_)
-        ->  comma_list(Term, Levels)
-        ;   Levels = Term
-        )
-    ;   Levels = [1, 100, 1000, 1000-other]
-    ).
-
-machine :-
-    current_prolog_flag(version, V),
-    catch(( read_file_to_string('/proc/cpuinfo', CPU, []),
-            sub_string(CPU, B, _, _, "model name"),
-            sub_string(CPU, B, 80, _, L0),
-            split_string(L0, "\n", "", [Line|_])
-          ), _, Line = "unknown cpu"),
-    format("SWI-Prolog ~w; ~w~n", [V, Line]).
-
-		 /*******************************
-		 *            SERVER            *
-		 *******************************/
-
-:- meta_predicate with_server(-, 0).
-
-with_server(Port, Goal) :-
-    bench_dir(Dir),
-    atom_concat(Dir, '/../server/oro_server.pl', Server),
-    setup_call_cleanup(
-        process_create(path(swipl), [Server, '--port=0'],
-                       [stdout(pipe(Out)), process(Pid)]),
-        ( read_line_to_string(Out, Line),
-          (   split_string(Line, ":", " ", Parts),
-              last(Parts, PortText),
-              number_string(Port, PortText)
-          ->  true
-          ;   throw(bench_no_port(Line))
-          ),
-          once(Goal)
-        ),
-        ( catch(process_kill(Pid), _, true),
-          process_wait(Pid, _),
-          close(Out)
-        )).
-
-		 /*******************************
-		 *            CLIENT            *
-		 *******************************/
-
-connect(Port, conn(In, Out)) :-
-    tcp_connect('127.0.0.1':Port, Pair, []),
-    stream_pair(Pair, In, Out),
-    set_stream(In, encoding(utf8)),
-    set_stream(In, newline(posix)),
-    set_stream(Out, encoding(utf8)),
-    set_stream(Out, newline(posix)).
-
-disconnect(conn(In, Out)) :-
-    catch(close(Out, [force(true)]), _, true),
-    catch(close(In, [force(true)]), _, true).
-
-send(conn(_, Out), Method, Params) :-
-    format(Out, "~w~n", [Method]),
-    forall(member(P, Params), format(Out, "~w~n", [P])),
-    format(Out, "#end#~n", []),
-    flush_output(Out).
-
-%   receive(+Conn, -Message, +Timeout): ok(Value), error(Name, Text),
-%   event(Id, Content) or timeout.
-
-receive(conn(In, _), Message, Timeout) :-
-    (   wait_for_input([In], [_], Timeout)
-    ->  read_line_to_string(In, First),
-        body(In, Lines),
-        message(First, Lines, Message)
-    ;   Message = timeout
-    ).
-
-body(In, Lines) :-
-    read_line_to_string(In, Line),
-    (   Line == "#end#"
-    ->  Lines = []
-    ;   Line == end_of_file
-    ->  throw(bench_connection_closed)
-    ;   Lines = [Line|Rest],
-        body(In, Rest)
-    ).
-
-message("ok", [Value], ok(Value)) :- !.
-message("ok", [], ok("")) :- !.
-message("error", [Name|Text], error(Name, Text)) :- !.
-message("event", [Id, Content], event(Id, Content)) :- !.
-message(First, Lines, unexpected(First, Lines)).
-
-%   call_ok(+Conn, +Method, +Params, -Value): a request whose next
-%   message must be its `ok` (no event is pending when it is used).
+%   call_ok(+Conn, +Method, +Params[, -Value]): a request whose next
+%   message must be its `ok` (no event is pending when it is used),
+%   within 30 s.
 
 call_ok(Conn, Method, Params, Value) :-
-    send(Conn, Method, Params),
-    receive(Conn, Reply, 30),
-    (   Reply = ok(Value)
-    ->  true
-    ;   throw(bench_failed(Method, Params, Reply))
-    ).
+    bench_call(Conn, Method, Params, Value, 30).
 
 call_ok(Conn, Method, Params) :-
-    call_ok(Conn, Method, Params, _).
+    bench_call(Conn, Method, Params, _, 30).
 
 		 /*******************************
 		 *            LEVELS            *
 		 *******************************/
 
 bench(Port, Samples, Levels) :-
-    setup_call_cleanup(
-        connect(Port, Conn),
+    bench_with_connection(
+        Port, Conn,
         ( format("~n~w~t~12|~w~t~12+~w~t~14+~w~t~14+~w~t~14+~w~t~8+~w~t~15+~w~n",
                  [watchers, 'register', 'event median', 'event p99',
                   'after ok', missed, 'add unwatched', 'add watched']),
           level(Conn, 0, Samples),
           forall(member(W, Levels), level(Conn, W, Samples))
-        ),
-        disconnect(Conn)).
+        )).
 
 level(Conn, Level, Samples) :-
     (   Level = W-other
@@ -214,7 +104,7 @@ register_shelves(Conn, W, Shelf, Times) :-
     findall(T,
             ( between(1, W, I),
               format(string(P), Shelf, [I]),
-              timed(call_ok(Conn, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", P]), T)
+              bench_time(call_ok(Conn, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", P]), T)
             ), Times).
 
 %   barrier(+Conn): returns once every change sent before has been
@@ -242,11 +132,11 @@ latency(Conn, Id, W, I, Result) :-
     format(string(Stmt), "[~w isOn bench_table]", [Obj]),
     format(string(Expected), "[\"~w\"]", [Obj]),
     get_time(T0),
-    send(Conn, add, [Stmt]),
-    receive(Conn, Reply, 30),
+    bench_send(Conn, add, [Stmt]),
+    bench_receive(Conn, Reply, 30),
     (   Reply = ok(_)
     ->  get_time(TOk),
-        receive(Conn, Event, 5),
+        bench_receive(Conn, Event, 5),
         get_time(T1),
         (   Event = event(Id, Expected)
         ->  Latency is (T1 - T0) * 1.0e6,
@@ -261,7 +151,7 @@ add_times(Conn, W, Kind, Samples, Times) :-
     findall(T,
             ( between(1, Samples, I),
               add_statement(Kind, W, I, Stmt),
-              timed(call_ok(Conn, add, [Stmt]), T)
+              bench_time(call_ok(Conn, add, [Stmt]), T)
             ), Times).
 
 add_statement(unwatched, W, I, Stmt) :-
@@ -269,22 +159,15 @@ add_statement(unwatched, W, I, Stmt) :-
 add_statement(watched, W, I, Stmt) :-
     format(string(Stmt), "[plain_~d_~d isOn floor]", [W, I]).
 
-:- meta_predicate timed(0, -).
-
-timed(Goal, Micros) :-
-    get_time(T0),
-    once(Goal),
-    get_time(T1),
-    Micros is (T1 - T0) * 1.0e6.
-
 		 /*******************************
 		 *            REPORT            *
 		 *******************************/
 
 row(Level, RegTimes, Latencies, AfterOk, Missed, Unwatched, Watched) :-
     median_text(RegTimes, Reg),
-    median_text(Latencies, LMed),
-    p99_text(Latencies, LP99),
+    bench_summary(Latencies, LMedian, LP99),
+    bench_micros(LMedian, LMed),
+    bench_micros(LP99, LP),
     median_text(AfterOk, AMed),
     median_text(Unwatched, UMed),
     median_text(Watched, WMed),
@@ -293,24 +176,12 @@ row(Level, RegTimes, Latencies, AfterOk, Missed, Unwatched, Watched) :-
     ;   format(string(Label), "~d", [Level])
     ),
     format("~w~t~12|~w~t~12+~w~t~14+~w~t~14+~w~t~14+~w~t~8+~w~t~15+~w~n",
-           [Label, Reg, LMed, LP99, AMed, Missed, UMed, WMed]),
+           [Label, Reg, LMed, LP, AMed, Missed, UMed, WMed]),
     flush_output.
 
-median_text([], "-") :- !.
+%   median_text(+Times, -Text): the median of Times, "-" if there are
+%   none.
+
 median_text(Times, Text) :-
-    msort(Times, Sorted),
-    length(Sorted, N),
-    M is N // 2,
-    nth0(M, Sorted, X),
-    micros(X, Text).
-
-p99_text([], "-") :- !.
-p99_text(Times, Text) :-
-    msort(Times, Sorted),
-    length(Sorted, N),
-    P is min(N - 1, (N * 99) // 100),
-    nth0(P, Sorted, X),
-    micros(X, Text).
-
-micros(X, Text) :-
-    format(string(Text), "~1f us", [X]).
+    bench_summary(Times, Median, _),
+    bench_micros(Median, Text).

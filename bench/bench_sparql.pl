@@ -19,12 +19,12 @@
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_sparql)).
 :- use_module(library(oro/oro_store), [oro_asserted_count/2]).
-:- use_module(library(socket)).
-:- use_module(library(readutil)).
-:- use_module(library(apply)).
+:- use_module(library(option)).
+:- use_module(library(pairs)).
 :- use_module(library(lists)).
 :- use_module(library(main), [argv_options/3]).
 :- use_module(oro_bench('../server/oro_server')).
+:- use_module(bench_common).
 
 :- initialization(main, main).
 
@@ -34,9 +34,9 @@ opt_type(samples, samples, nonneg).
 main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
-    option_value(size, Options, 100000, Size),
-    option_value(samples, Options, 200, Samples),
-    machine,
+    option(size(Size), Options, 100000),
+    option(samples(Samples), Options, 200),
+    bench_machine,
     format("~n~w~t~52|~w~t~10+~w~t~12+~w~t~12+~w~t~10+ ~w~n",
            [operation, triples, median, p99, 'per second', rows]),
     oro_init([]),
@@ -44,66 +44,18 @@ main :-
     bench_in_process(Asserted, Samples),
     bench_socket(Size, Samples).
 
-option_value(Name, Options, Default, Value) :-
-    Opt =.. [Name, V],
-    (   memberchk(Opt, Options)
-    ->  Value = V
-    ;   Value = Default
-    ).
-
-machine :-
-    current_prolog_flag(version, V),
-    catch(( read_file_to_string('/proc/cpuinfo', CPU, []),
-            sub_string(CPU, B, _, _, "model name"),
-            sub_string(CPU, B, 80, _, L0),
-            split_string(L0, "\n", "", [Line|_])
-          ), _, Line = "unknown cpu"),
-    format("SWI-Prolog ~w; ~w~n", [V, Line]).
-
 		 /*******************************
 		 *           THE WORLD          *
 		 *******************************/
 
-world_statements(Triples, Statements) :-
-    Objects is Triples // 4,
-    findall(S, ( between(1, Objects, I), object_statement(I, S) ), Statements).
-
-object_statement(I, S) :-
-    class(I, Class),
-    F is I mod 50,
-    color(I, Color),
-    V is I mod 2,
-    (   format(string(S), "obj~d rdf:type ~w", [I, Class])
-    ;   format(string(S), "obj~d isOn furniture~d", [I, F])
-    ;   format(string(S), "obj~d hasColor ~w", [I, Color])
-    ;   V =:= 0
-    ->  format(string(S), "obj~d isVisible true", [I])
-    ;   format(string(S), "obj~d isVisible false", [I])
-    ).
-
-class(I, C) :-
-    nth0(N, ['Cup', 'Book', 'Box', 'Toy', 'Plate', 'VideoTape', 'Bottle'], C),
-    N =:= I mod 7,
-    !.
-
-color(I, C) :-
-    nth0(N, [red, green, blue, yellow, black, white], C),
-    N =:= I mod 6,
-    !.
+%   load_world(+Size, -Asserted): add bench_world/2's world of about
+%   Size triples in batches of 1000; Asserted triples in the model.
 
 load_world(Size, Asserted) :-
-    world_statements(Size, Statements),
-    batches(Statements, 1000, Batches),
+    bench_world(Size, Statements),
+    bench_batches(Statements, 1000, Batches),
     forall(member(B, Batches), oro_add(myself, B)),
     oro_asserted_count(myself, Asserted).
-
-batches(List, N, [Batch|Batches]) :-
-    length(Batch, N),
-    append(Batch, Rest, List),
-    !,
-    batches(Rest, N, Batches).
-batches([], _, []) :- !.
-batches(List, _, [List]).
 
 		 /*******************************
 		 *           QUERIES            *
@@ -187,57 +139,24 @@ bench_socket(Size, Samples) :-
         oro_server_start([port(0), host('127.0.0.1')], Server),
         ( load_world(Size, Asserted),
           oro_server_port(Server, Port),
-          setup_call_cleanup(
-              ( tcp_connect('127.0.0.1':Port, Pair, []),
-                stream_pair(Pair, In, Out),
-                set_stream(In, encoding(utf8)),
-                set_stream(Out, encoding(utf8))
-              ),
-              socket_figures(In-Out, Asserted, Samples),
-              close(Pair))
+          bench_with_connection(Port, C,
+                                socket_figures(C, Asserted, Samples))
         ),
         oro_server_stop(Server)).
 
-socket_figures(C, Size, Samples) :-
-    measure(Samples, I, call_ok(C, query, [o, Q]),
-            query('join 4 (+ visible)', I, Q), [], QTimes, _),
-    report('socket query, join 4', Size, QTimes, -),
-    measure(Samples, I, call_ok(C, find, [V, Ps, Fs]),
-            find_args(I, V, Ps, Fs), [], FTimes, _),
-    report('socket find, 4 patterns + 4 filters', Size, FTimes, -),
-    measure(Samples, I, call_ok(C, sparql, [Q]),
-            query('join 5 (inferred type, isAt, ?c)', I, Q), [], STimes, _),
-    report('socket sparql (JSON), join 5', Size, STimes, -).
-
-call_ok(In-Out, Method, Params) :-
-    format(Out, "~w~n", [Method]),
-    forall(member(P, Params), write_param(Out, P)),
-    format(Out, "#end#~n", []),
-    flush_output(Out),
-    read_line_to_string(In, Status),
-    read_line_to_string(In, _Value),
-    read_line_to_string(In, End),
-    (   Status == "ok", End == "#end#"
-    ->  true
-    ;   throw(bench_failed(Method, Status))
-    ).
-
-write_param(Out, List) :-
-    is_list(List),
-    !,
-    maplist(quoted_element, List, Elements),
-    atomic_list_concat(Elements, ', ', Text),
-    format(Out, "[~w]~n", [Text]).
-write_param(Out, Text) :-
-    format(Out, "~w~n", [Text]).
-
-%   Set elements are sent double-quoted, inner quotes escaped, as
+%   Sets of patterns and filters are sent quoted (bench_send/3), as
 %   liboro does, so that commas inside filters are kept.
 
-quoted_element(Text, Quoted) :-
-    split_string(Text, "\"", "", Parts),
-    atomic_list_concat(Parts, '\\"', Escaped),
-    format(atom(Quoted), '"~w"', [Escaped]).
+socket_figures(C, Size, Samples) :-
+    measure(Samples, I, bench_call(C, query, [o, Q]),
+            query('join 4 (+ visible)', I, Q), [], QTimes, _),
+    report('socket query, join 4', Size, QTimes, -),
+    measure(Samples, I, bench_call(C, find, [V, quoted(Ps), quoted(Fs)]),
+            find_args(I, V, Ps, Fs), [], FTimes, _),
+    report('socket find, 4 patterns + 4 filters', Size, FTimes, -),
+    measure(Samples, I, bench_call(C, sparql, [Q]),
+            query('join 5 (inferred type, isAt, ?c)', I, Q), [], STimes, _),
+    report('socket sparql (JSON), join 5', Size, STimes, -).
 
 		 /*******************************
 		 *          MEASURING           *
@@ -252,10 +171,7 @@ quoted_element(Text, Quoted) :-
 measure(N, I, Goal, Prepare, Rows, Times, Count) :-
     findall(T-C, ( between(1, N, I),
                    once(Prepare),
-                   get_time(T0),
-                   once(Goal),
-                   get_time(T1),
-                   T is (T1-T0)*1.0e6,
+                   bench_time(Goal, T),
                    (   is_list(Rows)
                    ->  length(Rows, C)
                    ;   C = 0
@@ -265,18 +181,10 @@ measure(N, I, Goal, Prepare, Rows, Times, Count) :-
     last(Counts, Count).
 
 report(Name, Size, Times, Rows) :-
-    msort(Times, Sorted),
-    length(Sorted, N),
-    M is N // 2,
-    nth0(M, Sorted, Median),
-    P is min(N-1, (N*99) // 100),
-    nth0(P, Sorted, P99),
+    bench_summary(Times, Median, P99),
     PerSecond is 1.0e6 / Median,
-    micros(Median, MText),
-    micros(P99, PText),
+    bench_micros(Median, MText),
+    bench_micros(P99, PText),
     format("~w~t~52|~d~t~10+~w~t~12+~w~t~12+~0f~t~10+ ~w~n",
            [Name, Size, MText, PText, PerSecond, Rows]),
     flush_output.
-
-micros(X, Text) :-
-    format(string(Text), "~1f us", [X]).
