@@ -24,6 +24,7 @@
 :- use_module(oro_query).
 :- use_module(oro_events).
 :- use_module(oro_memory).
+:- autoload(oro_agents, [oro_agents_start/0]).  % it builds on this module
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
 
@@ -109,7 +110,7 @@ oro_init(Options) :-
     oro_events_start,
     oro_events_reset,
     create_robot_model,
-    oro_agents:oro_agents_start.
+    oro_agents_start.
 
 %!  oro_reset is det.
 %
@@ -121,7 +122,7 @@ oro_reset :-
     oro_memory_reset,
     oro_wipe_models,
     create_robot_model,
-    oro_agents:oro_agents_start.
+    oro_agents_start.
 
 create_robot_model :-
     oro_create_model(myself),
