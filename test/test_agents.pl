@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
@@ -8,12 +8,6 @@
 :- use_module(library(readutil)).
 :- use_module(library(settings)).
 :- use_module(library(aggregate)).
-:- use_module(library(http/json)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  Tests for agent models (ORO-SPEC §6.6, §8, revise of §6.1, the
     vectors of §13.11), through the Prolog API (oro_agents/1,
@@ -40,15 +34,9 @@
 */
 
 :- dynamic
-    agm_test_dir/1,                     % Dir
-    agm_server/1,                       % Server
     agm_save_dir/1,                     % Dir
     agm_started_time_base/1,            % Milliseconds
     agm_replay_conn/2.                  % Thread, Conn
-
-:- prolog_load_context(directory, Dir),
-   retractall(agm_test_dir(_)),
-   assertz(agm_test_dir(Dir)).
 
 
                  /*******************************
@@ -83,17 +71,6 @@ agm_holds(Model, Statement, Bool) :-
     ;   Bool = false
     ).
 
-%   agm_find(+Model, +Var, +Patterns, -Names): contracted, sorted values.
-
-agm_find(Model, Var, Patterns, Names) :-
-    oro_find(Model, Var, Patterns, Values),
-    maplist(oro_term_text, Values, Names0),
-    sort(Names0, Names).
-
-agm_names(IRIs, Names) :-
-    maplist(oro_iri_name, IRIs, Names0),
-    sort(Names0, Names).
-
 %   agm_event_to(+Queue, +Id, +Content): an oro_subscribe/7 callback.
 
 agm_event_to(Queue, Id, Content) :-
@@ -112,33 +89,13 @@ agm_first_event(Model, Type, Trigger, Var, Patterns, Goal, Names) :-
                       agm_event_to(Queue), Id),
         ( once(Goal),
           (   thread_get_message(Queue, event(Id, Content), [timeout(5)])
-          ->  agm_names(Content, Names)
+          ->  test_names(Content, Names)
           ;   Names = timeout
           )
         ),
         ( oro_unsubscribe(Id),
           message_queue_destroy(Queue)
         )).
-
-%   agm_wait_until(:Condition, +Seconds) is semidet: poll Condition
-%   every 20 ms until it holds or Seconds have passed.
-
-:- meta_predicate agm_wait_until(0, +).
-
-agm_wait_until(Condition, Seconds) :-
-    get_time(Now),
-    Deadline is Now + Seconds,
-    agm_wait_until_(Condition, Deadline).
-
-agm_wait_until_(Condition, Deadline) :-
-    (   call(Condition)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.02),
-        agm_wait_until_(Condition, Deadline)
-    ;   fail
-    ).
 
 
                  /*******************************
@@ -183,7 +140,7 @@ test(subclass_axiom_makes_animals_agents,
 test(agents_in_the_ontology_at_start,
      [ true(Names == ['ACHILE_HUMAN1', 'JIDOKUKA_ROBOT', default, myself])
      ]) :-
-    agm_fixture('scenario-2011.ttl', Scenario),
+    test_fixture('scenario-2011.ttl', Scenario),
     oro_init([robot_id('JIDOKUKA_ROBOT'), ontologies([Scenario])]),
     agm_agents(Names).
 test(model_usable_right_after_add, [ setup(agm_fresh),
@@ -258,7 +215,7 @@ test(agent_may_be_human_in_own_model,
        true(Consistent == true)
      ]) :-
     oro_add(gerard, ["myself rdf:type Human"]),
-    agm_bool(oro_consistent(gerard), Consistent).
+    test_bool(oro_consistent(gerard), Consistent).
 test(clear_events_keeps_creation,
      [ setup(agm_fresh),
        true(Names == ['ROBOT', default, gerard, myself])
@@ -333,8 +290,8 @@ test(find, [ setup(agm_fresh_agents),
              true(G-M == [paris]-[])
            ]) :-
     oro_add(gerard, ["paris loves dancing"]),
-    agm_find(gerard, x, ["?x loves dancing"], G),
-    agm_find(myself, x, ["?x loves dancing"], M).
+    test_find(gerard, x, ["?x loves dancing"], G),
+    test_find(myself, x, ["?x loves dancing"], M).
 test(taxonomy, [ setup(agm_fresh_agents),
                  true(r(GS, MS, GI, MI) ==
                       r(true, false, ['spork1'], []))
@@ -346,12 +303,12 @@ test(taxonomy, [ setup(agm_fresh_agents),
     oro_name_iri('Spork', Spork),
     oro_subclasses(gerard, Tableware, GSubs),
     oro_subclasses(myself, Tableware, MSubs),
-    agm_bool(memberchk(Spork, GSubs), GS),
-    agm_bool(memberchk(Spork, MSubs), MS),
+    test_bool(memberchk(Spork, GSubs), GS),
+    test_bool(memberchk(Spork, MSubs), MS),
     oro_instances(gerard, Tableware, GIs),
     oro_instances(myself, Tableware, MIs),
-    agm_names(GIs, GI),
-    agm_names(MIs, MI).
+    test_names(GIs, GI),
+    test_names(MIs, MI).
 test(taxonomy_unknown_class_elsewhere,
      [ setup(agm_fresh_agents),
        error(existence_error(class, _))
@@ -374,8 +331,8 @@ test(runtime_functional_property, [ setup(agm_fresh_agents),
            ( oro_update(Model, ["ann hasPet rex"]),
              oro_update(Model, ["ann hasPet fido"])
            )),
-    agm_find(gerard, x, ["ann hasPet ?x"], G),
-    agm_find(myself, x, ["ann hasPet ?x"], M).
+    test_find(gerard, x, ["ann hasPet ?x"], G),
+    test_find(myself, x, ["ann hasPet ?x"], M).
 test(remove, [ setup(agm_fresh_agents),
                true(Holds == [false, true, true])
              ]) :-
@@ -390,8 +347,8 @@ test(clear_pattern, [ setup(agm_fresh_agents),
     forall(member(Model, [gerard, myself]),
            oro_add(Model, ["cup1 isOn table1"])),
     oro_clear(gerard, ["cup1 ?p ?o"]),
-    agm_find(gerard, o, ["cup1 isOn ?o"], G),
-    agm_find(myself, o, ["cup1 isOn ?o"], M).
+    test_find(gerard, o, ["cup1 isOn ?o"], G),
+    test_find(myself, o, ["cup1 isOn ?o"], M).
 test(ontology_fact_removed_in_one_model,
      [ setup(agm_fresh_agents),
        true(Holds == [false, true])
@@ -467,18 +424,10 @@ test(memory_per_model, [ setup(agm_fresh_agents),
 :- end_tests(agm_isolation).
 
 agm_consistent(Model, Bool) :-
-    agm_bool(oro_consistent(Model), Bool).
+    test_bool(oro_consistent(Model), Bool).
 
 agm_model_holds(Statement, Model, Bool) :-
     agm_holds(Model, Statement, Bool).
-
-:- meta_predicate agm_bool(0, -).
-
-agm_bool(Goal, Bool) :-
-    (   call(Goal)
-    ->  Bool = true
-    ;   Bool = false
-    ).
 
 
                  /*******************************
@@ -533,8 +482,8 @@ test(update, [ setup(agm_fresh_agents),
              ]) :-
     oro_revise(["ball isMoving true"], _{method:"add", models:"all"}),
     oro_revise(["ball isMoving false"], _{method:"update", models:"gerard"}),
-    agm_find(gerard, v, ["ball isMoving ?v"], G),
-    agm_find(myself, v, ["ball isMoving ?v"], M).
+    test_find(gerard, v, ["ball isMoving ?v"], G),
+    test_find(myself, v, ["ball isMoving ?v"], M).
 test(any_case_and_profile, [ setup(agm_fresh_agents),
                              true(N-Holds == 1-[true, false, false])
                            ]) :-
@@ -587,22 +536,15 @@ agm_where(Statement, Holds) :-
                  *        SOCKET HELPERS        *
                  *******************************/
 
-agm_fixture(File, Path) :-
-    agm_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
-
 %   agm_start(+Options): start a server on a free port of 127.0.0.1
 %   (stopping a leftover one first).  The memory time base it set is
 %   noted, then forced to 50 ms whatever it is.
 
 agm_start(Options) :-
     agm_stop_server,
-    oro_server_start([port(0), host('127.0.0.1')|Options], Server),
-    setting(oro_memory:time_base, TimeBase),
+    test_server_start_time_base(Options, TimeBase),
     retractall(agm_started_time_base(_)),
-    assertz(agm_started_time_base(TimeBase)),
-    set_setting(oro_memory:time_base, 50),
-    assertz(agm_server(Server)).
+    assertz(agm_started_time_base(TimeBase)).
 
 %   The server of §13.11: the common-sense ontology, robot id ROBOT, a
 %   50 ms time base and a save directory of its own.
@@ -624,97 +566,17 @@ agm_stop :-
            catch(delete_directory_and_contents(Dir), _, true)).
 
 agm_stop_server :-
-    forall(retract(agm_server(Server)),
-           ( agm_wait_connections(Server),
-             oro_events_sync,
-             oro_server_stop(Server)
-           )).
-
-%   agm_wait_connections(+Server): wait (10 s at most) until the
-%   server's workers have seen their clients leave.  Peeks at the
-%   server's pool through its handle.
-
-agm_wait_connections(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  ignore(agm_wait_until(agm_pool_idle(Pool), 10))
-    ;   true
-    ).
-
-agm_pool_idle(Pool) :-
-    catch(thread_pool_property(Pool, running(0)), _, true).
-
-agm_port(Port) :-
-    agm_server(Server),
-    !,
-    oro_server_port(Server, Port).
-
-:- meta_predicate agm_connected(-, 0).
-
-agm_connected(Conn, Goal) :-
-    agm_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, Conn),
-        once(Goal),
-        oro_disconnect(Conn)).
-
-%   agm_call(+Method, +Params, -Reply): one request on its own
-%   connection.
-
-agm_call(Method, Params, Reply) :-
-    agm_connected(Conn, oro_call(Conn, Method, Params, Reply)).
-
-%   agm_calls(+Requests, -Replies): Method-Params requests in order on
-%   one connection.
-
-agm_calls(Requests, Replies) :-
-    agm_connected(Conn, maplist(agm_request(Conn), Requests, Replies)).
-
-agm_request(Conn, Method-Params, Reply) :-
-    oro_call(Conn, Method, Params, Reply).
-
-%   agm_ok(+Method, +Params): a request that must succeed.
-
-agm_ok(Method, Params) :-
-    agm_call(Method, Params, Reply),
-    agm_expect_ok(Method-Params, Reply, _).
-
-agm_expect_ok(_, ok(Value), Value) :-
-    !.
-agm_expect_ok(Request, Reply, _) :-
-    throw(agm_unexpected_reply(Request, Reply)).
+    test_server_stop_synced.
 
 %   agm_server_fresh: back to the state the server started in.
 
 agm_server_fresh :-
-    agm_ok(reset, []).
-
-%   agm_json(+Line, -Value): the value line parsed as JSON (strings as
-%   strings).
-
-agm_json(Line, Value) :-
-    setup_call_cleanup(
-        open_string(Line, In),
-        json_read_dict(In, Value, [value_string_as(string)]),
-        close(In)).
-
-%   agm_set_call(+Method, +Params, -Set): a request answering a list,
-%   as a sorted list.
-
-agm_set_call(Method, Params, Set) :-
-    agm_call(Method, Params, Reply),
-    agm_set(Method-Params, Reply, Set).
-
-agm_set(Request, Reply, Set) :-
-    agm_expect_ok(Request, Reply, Line),
-    agm_json(Line, List),
-    must_be(list, List),
-    msort(List, Set).
+    test_ok(reset, []).
 
 %   agm_list_agents(-Names): listAgents as a sorted list of strings.
 
 agm_list_agents(Names) :-
-    agm_set_call(listAgents, [], Names).
+    test_set_call(listAgents, [], Names).
 
 agm_agent_listed(Name) :-
     agm_list_agents(Names),
@@ -727,23 +589,17 @@ agm_not_found(Name, error("laas.openrobots.ontology.exceptions.AgentNotFoundExce
                           Message)) :-
     format(string(Message), "I couldn't find the agent ~w.", [Name]).
 
-agm_error_name(Reply, Name) :-
-    (   Reply = error(Name0, _)
-    ->  Name = Name0
-    ;   Name = Reply
-    ).
-
 %   agm_forgotten_for(+Agent, +Var, +Pattern): findForAgent answers [].
 
 agm_forgotten_for(Agent, Var, Pattern) :-
-    agm_call(findForAgent, [Agent, Var, Pattern], ok("[]")).
+    test_call(findForAgent, [Agent, Var, Pattern], ok("[]")).
 
 %   agm_values_of_a1(+Agent, -Values): the values of a1 p and a1 q in
 %   the model of Agent.
 
 agm_values_of_a1(Agent, [P, Q]) :-
-    agm_set_call(findForAgent, [Agent, x, '[a1 p ?x]'], P),
-    agm_set_call(findForAgent, [Agent, x, '[a1 q ?x]'], Q).
+    test_set_call(findForAgent, [Agent, x, '[a1 p ?x]'], P),
+    test_set_call(findForAgent, [Agent, x, '[a1 q ?x]'], Q).
 
 agm_saved_text(File, Text) :-
     agm_save_dir(Dir),
@@ -765,7 +621,7 @@ test(time_base_option, true(TimeBase == 50)) :-
 test(list_agents_fresh, [ setup(agm_server_fresh),
                           true(Reply == ok("[\"ROBOT\",\"default\",\"myself\"]"))
                         ]) :-
-    agm_call(listAgents, [], Reply).
+    test_call(listAgents, [], Reply).
 test(list_agents_is_a_json_list, [ setup(agm_server_fresh),
                                    true(Names == ["ROBOT", "default", "myself"])
                                  ]) :-
@@ -775,70 +631,70 @@ test(vector_13_11, [ setup(agm_server_fresh),
                                        ok("[]"), NotFound ])
                    ]) :-
     agm_not_found(nobody, NotFound),
-    agm_calls([ add-['[gerard rdf:type Agent]'],
-                addForAgent-[gerard, '[paris loves dancing]'],
-                findForAgent-[gerard, x, '[?x loves dancing]'],
-                find-[x, '[?x loves dancing]'],
-                addForAgent-[nobody, '[a b c]']
-              ], Replies).
+    test_calls([ add-['[gerard rdf:type Agent]'],
+                 addForAgent-[gerard, '[paris loves dancing]'],
+                 findForAgent-[gerard, x, '[?x loves dancing]'],
+                 find-[x, '[?x loves dancing]'],
+                 addForAgent-[nobody, '[a b c]']
+               ], Replies).
 test(find_for_agent_junit,
      [ setup(agm_server_fresh),
        true(Replies-Empty ==
             [ok(""), ok(""), ok("[\"gorilla\"]"), ok("[]")]-
             "laas.openrobots.ontology.exceptions.OntologyServerException")
      ]) :-
-    agm_calls([ add-['[toto rdf:type Agent]'],
-                addForAgent-[toto, '[gorilla eats banana_tree, gorilla isFemale false, elephant weight 1547.32]'],
-                findForAgent-[toto, mysterious, '[?mysterious eats banana_tree, ?mysterious isFemale false]'],
-                findForAgent-[toto, '""', '[]'],
-                findForAgent-[toto, '?mysterious', '[]']
-              ], [R1, R2, R3, R4, R5]),
-    agm_error_name(R4, Empty),
+    test_calls([ add-['[toto rdf:type Agent]'],
+                 addForAgent-[toto, '[gorilla eats banana_tree, gorilla isFemale false, elephant weight 1547.32]'],
+                 findForAgent-[toto, mysterious, '[?mysterious eats banana_tree, ?mysterious isFemale false]'],
+                 findForAgent-[toto, '""', '[]'],
+                 findForAgent-[toto, '?mysterious', '[]']
+               ], [R1, R2, R3, R4, R5]),
+    test_error_name(R4, Empty),
     Replies = [R1, R2, R3, R5].
 test(find_for_agent_filters,
      [ setup(agm_server_fresh),
        true(Replies == [ok(""), ok(""), ok("[\"elephant\"]"),
                         ok("[\"elephant\"]")])
      ]) :-
-    agm_calls([ add-['[toto rdf:type Agent]'],
-                addForAgent-[toto, '[gorilla eats banana_tree, elephant weight 1547.32, gorilla weight 150]'],
-                findForAgent-[toto, mysterious, '[?mysterious oro:weight ?value]', '[?value >= 1000]'],
-                find-['[mysterious]', '[?mysterious oro:weight ?value]', '[?value >= 1000]', '[toto]']
-              ], Replies).
+    test_calls([ add-['[toto rdf:type Agent]'],
+                 addForAgent-[toto, '[gorilla eats banana_tree, elephant weight 1547.32, gorilla weight 150]'],
+                 findForAgent-[toto, mysterious, '[?mysterious oro:weight ?value]', '[?value >= 1000]'],
+                 find-['[mysterious]', '[?mysterious oro:weight ?value]', '[?value >= 1000]', '[toto]']
+               ], Replies).
 test(find_kb_api, [ setup(agm_server_fresh),
                     true(Replies == [ ok(""), ok(""), ok(""),
                                       ok("[\"paris\"]"), ok("[\"rome\"]"),
                                       ok("[\"rome\"]") ])
                   ]) :-
-    agm_calls([ add-['[gerard rdf:type Agent]'],
-                addForAgent-[gerard, '[paris loves dancing]'],
-                add-['[rome loves dancing]'],
-                find-['[x]', '[?x loves dancing]', '[]', '[gerard]'],
-                find-['[x]', '[?x loves dancing]', '[]', '[]'],
-                find-['[x]', '[?x loves dancing]', null, null]
-              ], Replies).
+    test_calls([ add-['[gerard rdf:type Agent]'],
+                 addForAgent-[gerard, '[paris loves dancing]'],
+                 add-['[rome loves dancing]'],
+                 find-['[x]', '[?x loves dancing]', '[]', '[gerard]'],
+                 find-['[x]', '[?x loves dancing]', '[]', '[]'],
+                 find-['[x]', '[?x loves dancing]', null, null]
+               ], Replies).
 test(get_infos_for_agent,
      [ setup(agm_server_fresh),
        true(r(Before, N, Likes, RobotLikes) ==
             r("com.hp.hpl.jena.shared.NotFoundException", 2, true, false))
      ]) :-
-    agm_ok(add, ['[Animal rdfs:subClassOf Agent, baboon rdf:type Animal]']),
-    agm_call(getInfosForAgent, [baboon, banana], R1),
-    agm_error_name(R1, Before),
-    agm_ok(addForAgent, [baboon, '[baboon likes banana]']),
-    agm_set_call(getInfosForAgent, [baboon, banana], Infos),
+    test_ok(add, ['[Animal rdfs:subClassOf Agent, baboon rdf:type Animal]']),
+    test_call(getInfosForAgent, [baboon, banana], R1),
+    test_error_name(R1, Before),
+    test_ok(addForAgent, [baboon, '[baboon likes banana]']),
+    test_set_call(getInfosForAgent, [baboon, banana], Infos),
     length(Infos, N),
-    agm_set_call(getInfosForAgent, [baboon, baboon], AgentInfos),
-    agm_bool(memberchk("baboon likes banana", AgentInfos), Likes),
-    agm_set_call(getInfos, [baboon], RobotInfos),
-    agm_bool(memberchk("baboon likes banana", RobotInfos), RobotLikes).
+    test_set_call(getInfosForAgent, [baboon, baboon], AgentInfos),
+    test_bool(memberchk("baboon likes banana", AgentInfos), Likes),
+    test_set_call(getInfos, [baboon], RobotInfos),
+    test_bool(memberchk("baboon likes banana", RobotInfos), RobotLikes).
 test(lookup_for_agent, [ setup(agm_server_fresh),
                          true(G-M == [["paris", "INSTANCE"]]-[])
                        ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_ok(addForAgent, [gerard, '[paris loves dancing, paris rdfs:label "Paname"]']),
-    agm_set_call(lookupForAgent, [gerard, 'Paname'], G),
-    agm_set_call(lookup, ['Paname'], M).
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(addForAgent, [gerard, '[paris loves dancing, paris rdfs:label "Paname"]']),
+    test_set_call(lookupForAgent, [gerard, 'Paname'], G),
+    test_set_call(lookup, ['Paname'], M).
 test(events_per_agent, [ setup(agm_server_fresh),
                          true(Replies-Ids == [ok(""), ok(""), ok(""), ok("")]-
                                              [Marker, Teeth])
@@ -846,87 +702,87 @@ test(events_per_agent, [ setup(agm_server_fresh),
     % The vector of §13.11, with a second watcher on gerard's model to
     % show the order of events: a firing caused by the robot-model add
     % would come before the marker's.
-    agm_ok(add, ['[gerard rdf:type Agent]']),
-    agm_connected(Conn,
-                  ( oro_call(Conn, registerEventForAgent,
-                             [gerard, 'FACT_CHECKING', 'ON_TRUE',
-                              '[chicken has teeth]'], ok(Teeth)),
-                    oro_call(Conn, registerEventForAgent,
-                             [gerard, 'FACT_CHECKING', 'ON_TRUE',
-                              '[marker is set]'], ok(Marker)),
-                    oro_call(Conn, add, ['[chicken has teeth]'], R1),
-                    oro_call(Conn, addForAgent, [gerard, '[marker is set]'], R2),
-                    oro_call(Conn, addForAgent, [gerard, '[chicken has teeth]'], R3),
-                    oro_call(Conn, add, ['[chicken has feathers]'], R4),
-                    oro_next_event(Conn, E1, 5),
-                    oro_next_event(Conn, E2, 5)
-                  )),
+    test_ok(add, ['[gerard rdf:type Agent]']),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEventForAgent,
+                              [gerard, 'FACT_CHECKING', 'ON_TRUE',
+                               '[chicken has teeth]'], ok(Teeth)),
+                     oro_call(Conn, registerEventForAgent,
+                              [gerard, 'FACT_CHECKING', 'ON_TRUE',
+                               '[marker is set]'], ok(Marker)),
+                     oro_call(Conn, add, ['[chicken has teeth]'], R1),
+                     oro_call(Conn, addForAgent, [gerard, '[marker is set]'], R2),
+                     oro_call(Conn, addForAgent, [gerard, '[chicken has teeth]'], R3),
+                     oro_call(Conn, add, ['[chicken has feathers]'], R4),
+                     oro_next_event(Conn, E1, 5),
+                     oro_next_event(Conn, E2, 5)
+                   )),
     Replies = [R1, R2, R3, R4],
     maplist(agm_event_id, [E1, E2], Ids).
 test(events_robot_model_only, [ setup(agm_server_fresh),
                                 true(Event == "[\"chicken\"]")
                               ]) :-
-    agm_ok(add, ['[gerard rdf:type Agent]']),
-    agm_connected(Conn,
-                  ( oro_call(Conn, registerEvent,
-                             ['NEW_INSTANCE', 'ON_TRUE', x, '[?x has teeth]'],
-                             ok(_)),
-                    oro_call(Conn, addForAgent, [gerard, '[hen has teeth]'], ok(_)),
-                    oro_call(Conn, add, ['[chicken has teeth]'], ok(_)),
-                    oro_next_event(Conn, E, 5)
-                  )),
+    test_ok(add, ['[gerard rdf:type Agent]']),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEvent,
+                              ['NEW_INSTANCE', 'ON_TRUE', x, '[?x has teeth]'],
+                              ok(_)),
+                     oro_call(Conn, addForAgent, [gerard, '[hen has teeth]'], ok(_)),
+                     oro_call(Conn, add, ['[chicken has teeth]'], ok(_)),
+                     oro_next_event(Conn, E, 5)
+                   )),
     agm_event_content(E, Event).
 test(new_instance_for_agent, [ setup(agm_server_fresh),
                                true(Event == "[\"hen\"]")
                              ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_connected(Conn,
-                  ( oro_call(Conn, registerEventForAgent,
-                             [gerard, 'NEW_INSTANCE', 'ON_TRUE', x,
-                              '[?x has teeth]'], ok(_)),
-                    oro_call(Conn, add, ['[chicken has teeth]'], ok(_)),
-                    oro_call(Conn, addForAgent, [gerard, '[hen has teeth]'], ok(_)),
-                    oro_next_event(Conn, E, 5)
-                  )),
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEventForAgent,
+                              [gerard, 'NEW_INSTANCE', 'ON_TRUE', x,
+                               '[?x has teeth]'], ok(_)),
+                     oro_call(Conn, add, ['[chicken has teeth]'], ok(_)),
+                     oro_call(Conn, addForAgent, [gerard, '[hen has teeth]'], ok(_)),
+                     oro_next_event(Conn, E, 5)
+                   )),
     agm_event_content(E, Event).
 test(listed_right_after_add,
      [ setup(agm_server_fresh),
        true(memberchk("baboon", Names))
      ]) :-
-    agm_connected(Conn,
-                  ( oro_call(Conn, add, ['[baboon rdf:type Animal, Animal rdfs:subClassOf Agent]'], ok(_)),
-                    oro_call(Conn, listAgents, [], Reply)
-                  )),
-    agm_set(listAgents-[], Reply, Names).
+    test_connected(Conn,
+                   ( oro_call(Conn, add, ['[baboon rdf:type Animal, Animal rdfs:subClassOf Agent]'], ok(_)),
+                     oro_call(Conn, listAgents, [], Reply)
+                   )),
+    test_set(Reply, Names).
 test(listed_eventually, [ setup(agm_server_fresh),
                           true(Names == ["ROBOT", "baboon", "default",
                                          "kiki", "myself"])
                         ]) :-
-    agm_ok(add, ['[baboon rdf:type Animal, kiki rdf:type Animal]']),
-    agm_ok(add, ['[Animal rdfs:subClassOf Agent]']),
-    agm_wait_until(( agm_agent_listed("baboon"),
-                     agm_agent_listed("kiki")
-                   ), 5),
+    test_ok(add, ['[baboon rdf:type Animal, kiki rdf:type Animal]']),
+    test_ok(add, ['[Animal rdfs:subClassOf Agent]']),
+    test_wait_until(( agm_agent_listed("baboon"),
+                      agm_agent_listed("kiki")
+                    ), 5),
     agm_list_agents(Names).
 test(robot_aliases, [ setup(agm_server_fresh),
                       true(Set == ["r1", "r2", "r3"])
                     ]) :-
-    agm_ok(addForAgent, ['ROBOT', '[r1 p o]']),
-    agm_ok(addForAgent, [default, '[r2 p o]']),
-    agm_ok(addForAgent, [myself, '[r3 p o]']),
-    agm_set_call(find, [x, '[?x p o]'], Set).
+    test_ok(addForAgent, ['ROBOT', '[r1 p o]']),
+    test_ok(addForAgent, [default, '[r2 p o]']),
+    test_ok(addForAgent, [myself, '[r3 p o]']),
+    test_set_call(find, [x, '[?x p o]'], Set).
 test(myself_in_agent_model, [ setup(agm_server_fresh),
                               true(G-M == ["gerard", "myself"]-["ROBOT", "myself"])
                             ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_set_call(findForAgent, [gerard, x, '[myself owl:sameAs ?x]'], G),
-    agm_set_call(findForAgent, [myself, x, '[myself owl:sameAs ?x]'], M).
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_set_call(findForAgent, [gerard, x, '[myself owl:sameAs ?x]'], G),
+    test_set_call(findForAgent, [myself, x, '[myself owl:sameAs ?x]'], M).
 test(case_sensitive, [ setup(agm_server_fresh),
                        true(Reply == NotFound)
                      ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(add, ['[gerard rdf:type Human]']),
     agm_not_found('Gerard', NotFound),
-    agm_call(addForAgent, ['Gerard', '[a b c]'], Reply).
+    test_call(addForAgent, ['Gerard', '[a b c]'], Reply).
 test(unknown_agent_everywhere, [ setup(agm_server_fresh),
                                  true(Bad == [])
                                ]) :-
@@ -949,7 +805,7 @@ test(unknown_agent_everywhere, [ setup(agm_server_fresh),
                  clearEventsForAgent-[nobody],
                  checkConsistencyForAgent-[nobody]
                ],
-    agm_calls(Requests, Replies),
+    test_calls(Requests, Replies),
     findall(M-R, ( nth1(I, Requests, M-_),
                    nth1(I, Replies, R),
                    R \== NotFound
@@ -957,107 +813,107 @@ test(unknown_agent_everywhere, [ setup(agm_server_fresh),
 test(remove_for_agent, [ setup(agm_server_fresh),
                          true(G-M == [[], ["b2"]]-[["b1"], ["b2"]])
                        ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_ok(addForAgent, [gerard, '[a1 p b1, a1 q b2]']),
-    agm_ok(add, ['[a1 p b1, a1 q b2]']),
-    agm_ok(removeForAgent, [gerard, '[a1 p ?x]']),
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(addForAgent, [gerard, '[a1 p b1, a1 q b2]']),
+    test_ok(add, ['[a1 p b1, a1 q b2]']),
+    test_ok(removeForAgent, [gerard, '[a1 p ?x]']),
     agm_values_of_a1(gerard, G),
     agm_values_of_a1(myself, M).
 test(clear_for_agent, [ setup(agm_server_fresh),
                         true(G-M == [[], []]-[["b1"], ["b2"]])
                       ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_ok(addForAgent, [gerard, '[a1 p b1, a1 q b2]']),
-    agm_ok(add, ['[a1 p b1, a1 q b2]']),
-    agm_ok(clearForAgent, [gerard, '[a1 ?p ?o]']),
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(addForAgent, [gerard, '[a1 p b1, a1 q b2]']),
+    test_ok(add, ['[a1 p b1, a1 q b2]']),
+    test_ok(clearForAgent, [gerard, '[a1 ?p ?o]']),
     agm_values_of_a1(gerard, G),
     agm_values_of_a1(myself, M).
 test(update_for_agent, [ setup(agm_server_fresh),
                          true(G-M == ["false"]-["true"])
                        ]) :-
-    agm_ok(add, ['[gerard rdf:type Human, ball isMoving true]']),
-    agm_ok(addForAgent, [gerard, '[ball isMoving true]']),
-    agm_ok(updateForAgent, [gerard, '[ball isMoving false]']),
-    agm_set_call(findForAgent, [gerard, v, '[ball isMoving ?v]'], G),
-    agm_set_call(find, [v, '[ball isMoving ?v]'], M).
+    test_ok(add, ['[gerard rdf:type Human, ball isMoving true]']),
+    test_ok(addForAgent, [gerard, '[ball isMoving true]']),
+    test_ok(updateForAgent, [gerard, '[ball isMoving false]']),
+    test_set_call(findForAgent, [gerard, v, '[ball isMoving ?v]'], G),
+    test_set_call(find, [v, '[ball isMoving ?v]'], M).
 test(reasoning_per_model, [ setup(agm_server_fresh),
                             true(G-M == ["spork1"]-[])
                           ]) :-
-    agm_ok(add, ['[gerard rdf:type Human, spork1 rdf:type Spork]']),
-    agm_ok(addForAgent, [gerard, '[Spork rdfs:subClassOf Tableware, spork1 rdf:type Spork]']),
-    agm_set_call(findForAgent, [gerard, x, '[?x rdf:type Artifact]'], G),
-    agm_set_call(find, [x, '[?x rdf:type Artifact]'], M).
+    test_ok(add, ['[gerard rdf:type Human, spork1 rdf:type Spork]']),
+    test_ok(addForAgent, [gerard, '[Spork rdfs:subClassOf Tableware, spork1 rdf:type Spork]']),
+    test_set_call(findForAgent, [gerard, x, '[?x rdf:type Artifact]'], G),
+    test_set_call(find, [x, '[?x rdf:type Artifact]'], M).
 test(safe_add_for_agent, [ setup(agm_server_fresh),
                            true(Replies == [ok(""), ok("true"), ok("true"),
                                             ok("[\"a\",\"b\"]")])
                          ]) :-
-    agm_calls([ add-['[gerard rdf:type Human]'],
-                safeAddForAgent-[gerard, '[a p o]'],
-                safeAddForAgent-[gerard, '[b p o]', 'EPISODIC'],
-                findForAgent-[gerard, x, '[?x p o]']
-              ], Replies).
+    test_calls([ add-['[gerard rdf:type Human]'],
+                 safeAddForAgent-[gerard, '[a p o]'],
+                 safeAddForAgent-[gerard, '[b p o]', 'EPISODIC'],
+                 findForAgent-[gerard, x, '[?x p o]']
+               ], Replies).
 test(consistency_per_agent, [ setup(agm_server_fresh),
                               true(Replies == [ ok(""), ok("true"), ok(""),
                                                 ok("false"), ok("true"),
                                                 ok("true") ])
                             ]) :-
-    agm_calls([ add-['[gerard rdf:type Human, toto rdf:type Agent]'],
-                checkConsistencyForAgent-[toto],
-                addForAgent-[toto, '[hand1 rdf:type BodyPart, hand1 rdf:type Agent]'],
-                checkConsistencyForAgent-[toto],
-                checkConsistencyForAgent-[gerard],
-                checkConsistency-[]
-              ], Replies).
+    test_calls([ add-['[gerard rdf:type Human, toto rdf:type Agent]'],
+                 checkConsistencyForAgent-[toto],
+                 addForAgent-[toto, '[hand1 rdf:type BodyPart, hand1 rdf:type Agent]'],
+                 checkConsistencyForAgent-[toto],
+                 checkConsistencyForAgent-[gerard],
+                 checkConsistency-[]
+               ], Replies).
 test(safe_add_for_agent_rejects,
      [ setup(agm_server_fresh),
        true(Replies-G-T == [ ok(""), ok("false"), ok("true"), ok("true") ]-
                            true-false)
      ]) :-
-    agm_calls([ add-['[gerard rdf:type Human, toto rdf:type Agent]'],
-                safeAddForAgent-[toto, '[hand1 rdf:type BodyPart, hand1 rdf:type Agent]'],
-                safeAddForAgent-[gerard, '[hand1 rdf:type Agent]', 'EPISODIC'],
-                checkConsistencyForAgent-[toto]
-              ], Replies),
-    agm_set_call(findForAgent, [gerard, x, '[?x rdf:type Agent]'], GAgents),
-    agm_bool(memberchk("hand1", GAgents), G),
-    agm_set_call(findForAgent, [toto, x, '[?x rdf:type Agent]'], TAgents),
-    agm_bool(memberchk("hand1", TAgents), T).
+    test_calls([ add-['[gerard rdf:type Human, toto rdf:type Agent]'],
+                 safeAddForAgent-[toto, '[hand1 rdf:type BodyPart, hand1 rdf:type Agent]'],
+                 safeAddForAgent-[gerard, '[hand1 rdf:type Agent]', 'EPISODIC'],
+                 checkConsistencyForAgent-[toto]
+               ], Replies),
+    test_set_call(findForAgent, [gerard, x, '[?x rdf:type Agent]'], GAgents),
+    test_bool(memberchk("hand1", GAgents), G),
+    test_set_call(findForAgent, [toto, x, '[?x rdf:type Agent]'], TAgents),
+    test_bool(memberchk("hand1", TAgents), T).
 test(add_for_agent_short_term, [ setup(agm_server_fresh),
                                  true(Found-Gone-Long == ["a"]-true-["l"])
                                ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_ok(addForAgent, [gerard, '[l p o]', 'LONGTERM']),
-    agm_ok(addForAgent, [gerard, '[a q o]', 'SHORTTERM']),
-    agm_set_call(findForAgent, [gerard, x, '[?x q o]'], Found),
-    agm_bool(agm_wait_until(agm_forgotten_for(gerard, x, '[?x q o]'), 5), Gone),
-    agm_set_call(findForAgent, [gerard, x, '[?x p o]'], Long).
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(addForAgent, [gerard, '[l p o]', 'LONGTERM']),
+    test_ok(addForAgent, [gerard, '[a q o]', 'SHORTTERM']),
+    test_set_call(findForAgent, [gerard, x, '[?x q o]'], Found),
+    test_bool(test_wait_until(agm_forgotten_for(gerard, x, '[?x q o]'), 5), Gone),
+    test_set_call(findForAgent, [gerard, x, '[?x p o]'], Long).
 test(save_agent_model, [ setup(agm_server_fresh),
                          true(r(Reply, Dancing, Tea) == r(ok(""), true, false))
                        ]) :-
-    agm_ok(add, ['[gerard rdf:type Human, gerard drinks robot_only_tea]']),
-    agm_ok(addForAgent, [gerard, '[paris loves dancing]']),
-    agm_call(save, [gerard, 'gerard.owl'], Reply),
+    test_ok(add, ['[gerard rdf:type Human, gerard drinks robot_only_tea]']),
+    test_ok(addForAgent, [gerard, '[paris loves dancing]']),
+    test_call(save, [gerard, 'gerard.owl'], Reply),
     agm_saved_text('gerard.owl', Text),
-    agm_bool(sub_string(Text, _, _, _, "dancing"), Dancing),
-    agm_bool(sub_string(Text, _, _, _, "robot_only_tea"), Tea).
+    test_bool(sub_string(Text, _, _, _, "dancing"), Dancing),
+    test_bool(sub_string(Text, _, _, _, "robot_only_tea"), Tea).
 test(clear_events_keeps_creation, [ setup(agm_server_fresh),
                                     true(Replies == [ok(""), ok(""), ok(""), ok(""),
                                                      ok("[\"paris\"]")])
                                   ]) :-
-    agm_calls([ clearEvents-[],
-                clearEventsForAgent-[myself],
-                add-['[gerard rdf:type Human]'],
-                addForAgent-[gerard, '[paris loves dancing]'],
-                findForAgent-[gerard, x, '[?x loves dancing]']
-              ], Replies).
+    test_calls([ clearEvents-[],
+                 clearEventsForAgent-[myself],
+                 add-['[gerard rdf:type Human]'],
+                 addForAgent-[gerard, '[paris loves dancing]'],
+                 findForAgent-[gerard, x, '[?x loves dancing]']
+               ], Replies).
 test(reset_discards_agents, [ setup(agm_server_fresh),
                               true(Reply-Names == NotFound-["ROBOT", "default", "myself"])
                             ]) :-
-    agm_ok(add, ['[gerard rdf:type Human]']),
-    agm_ok(addForAgent, [gerard, '[paris loves dancing]']),
-    agm_ok(reset, []),
+    test_ok(add, ['[gerard rdf:type Human]']),
+    test_ok(addForAgent, [gerard, '[paris loves dancing]']),
+    test_ok(reset, []),
     agm_not_found(gerard, NotFound),
-    agm_call(addForAgent, [gerard, '[paris loves dancing]'], Reply),
+    test_call(addForAgent, [gerard, '[paris loves dancing]'], Reply),
     agm_list_agents(Names).
 
 :- end_tests(agm_socket).
@@ -1083,100 +939,100 @@ agm_event_content(Other, Other).
 test(add_list, [ setup(agm_revise_fresh),
                  true(Reply-Where == ok("")-[true, false, false])
                ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": ["gerard", "nobody"]}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": ["gerard", "nobody"]}'], Reply),
     agm_where_socket(Where).
 test(add_string, [ setup(agm_revise_fresh),
                    true(Reply-Where == ok("")-[false, false, true])
                  ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": "toto"}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": "toto"}'], Reply),
     agm_where_socket(Where).
 test(add_all, [ setup(agm_revise_fresh),
                 true(Reply-Where == ok("")-[true, true, true])
               ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": "all"}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": "all"}'], Reply),
     agm_where_socket(Where).
 test(add_empty_list, [ setup(agm_revise_fresh),
                        true(Reply-Where == ok("")-[true, true, true])
                      ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": []}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": []}'], Reply),
     agm_where_socket(Where).
 test(add_models_missing, [ setup(agm_revise_fresh),
                            true(Reply-Where == ok("")-[false, true, false])
                          ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add"}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add"}'], Reply),
     agm_where_socket(Where).
 test(unknown_string_model_skipped,
      [ setup(agm_revise_fresh),
        true(Reply-Where == ok("")-[false, false, false])
      ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": "nobody"}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": "nobody"}'], Reply),
     agm_where_socket(Where).
 test(safe_add, [ setup(agm_revise_fresh),
                  true(Reply-Where == ok("")-[true, true, false])
                ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "SAFE_ADD", "models": ["gerard", "ROBOT"]}'], Reply),
+    test_call(revise, ['[r1 p o]', '{"method": "SAFE_ADD", "models": ["gerard", "ROBOT"]}'], Reply),
     agm_where_socket(Where).
 test(retract, [ setup(agm_revise_fresh),
                 true(Replies-Where == [ok(""), ok("")]-[false, true, true])
               ]) :-
-    agm_calls([ revise-['[r1 p o]', '{"method": "add", "models": "all"}'],
-                revise-['[r1 p o]', '{"method": "retract", "models": ["gerard"]}']
-              ], Replies),
+    test_calls([ revise-['[r1 p o]', '{"method": "add", "models": "all"}'],
+                 revise-['[r1 p o]', '{"method": "retract", "models": ["gerard"]}']
+               ], Replies),
     agm_where_socket(Where).
 test(update, [ setup(agm_revise_fresh),
                true(Replies-G-M == [ok(""), ok("")]-["false"]-["true"])
              ]) :-
-    agm_calls([ revise-['[ball isMoving true]', '{"method": "add", "models": "all"}'],
-                revise-['[ball isMoving false]', '{"method": "Update", "models": ["gerard"]}']
-              ], Replies),
-    agm_set_call(findForAgent, [gerard, v, '[ball isMoving ?v]'], G),
-    agm_set_call(find, [v, '[ball isMoving ?v]'], M).
+    test_calls([ revise-['[ball isMoving true]', '{"method": "add", "models": "all"}'],
+                 revise-['[ball isMoving false]', '{"method": "Update", "models": ["gerard"]}']
+               ], Replies),
+    test_set_call(findForAgent, [gerard, v, '[ball isMoving ?v]'], G),
+    test_set_call(find, [v, '[ball isMoving ?v]'], M).
 test(memory_profile, [ setup(agm_revise_fresh),
                        true(Reply-Found-Gone == ok("")-["r1"]-true)
                      ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": "gerard", "memory_profile": "shortterm"}'], Reply),
-    agm_set_call(findForAgent, [gerard, x, '[?x p o]'], Found),
-    agm_bool(agm_wait_until(agm_forgotten_for(gerard, x, '[?x p o]'), 5), Gone).
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": "gerard", "memory_profile": "shortterm"}'], Reply),
+    test_set_call(findForAgent, [gerard, x, '[?x p o]'], Found),
+    test_bool(test_wait_until(agm_forgotten_for(gerard, x, '[?x p o]'), 5), Gone).
 test(revision, [ setup(agm_revise_fresh),
                  true(Name == "laas.openrobots.ontology.exceptions.NotImplementedException")
                ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "revision", "models": "all"}'], Reply),
-    agm_error_name(Reply, Name).
+    test_call(revise, ['[r1 p o]', '{"method": "revision", "models": "all"}'], Reply),
+    test_error_name(Reply, Name).
 test(safe_update, [ setup(agm_revise_fresh),
                     true(Name == "laas.openrobots.ontology.exceptions.NotImplementedException")
                   ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "safe_update"}'], Reply),
-    agm_error_name(Reply, Name).
+    test_call(revise, ['[r1 p o]', '{"method": "safe_update"}'], Reply),
+    test_error_name(Reply, Name).
 test(bad_method, [ setup(agm_revise_fresh),
                    true(Name-Where == "laas.openrobots.ontology.exceptions.InvalidPolicyException"-
                                       [false, false, false])
                  ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "insert", "models": "all"}'], Reply),
-    agm_error_name(Reply, Name),
+    test_call(revise, ['[r1 p o]', '{"method": "insert", "models": "all"}'], Reply),
+    test_error_name(Reply, Name),
     agm_where_socket(Where).
 test(missing_method, [ setup(agm_revise_fresh),
                        true(Name == "laas.openrobots.ontology.exceptions.InvalidPolicyException")
                      ]) :-
-    agm_call(revise, ['[r1 p o]', '{"models": "all"}'], Reply),
-    agm_error_name(Reply, Name).
+    test_call(revise, ['[r1 p o]', '{"models": "all"}'], Reply),
+    test_error_name(Reply, Name).
 test(policy_not_json, [ setup(agm_revise_fresh),
                         true(Name == "laas.openrobots.ontology.exceptions.InvalidPolicyException")
                       ]) :-
-    agm_call(revise, ['[r1 p o]', 'add to all'], Reply),
-    agm_error_name(Reply, Name).
+    test_call(revise, ['[r1 p o]', 'add to all'], Reply),
+    test_error_name(Reply, Name).
 test(unknown_profile, [ setup(agm_revise_fresh),
                         true(Name-Where == "java.lang.IllegalArgumentException"-
                                            [false, false, false])
                       ]) :-
-    agm_call(revise, ['[r1 p o]', '{"method": "add", "models": "all", "memory_profile": "forever"}'], Reply),
-    agm_error_name(Reply, Name),
+    test_call(revise, ['[r1 p o]', '{"method": "add", "models": "all", "memory_profile": "forever"}'], Reply),
+    test_error_name(Reply, Name),
     agm_where_socket(Where).
 test(bad_statement, [ setup(agm_revise_fresh),
                       true(Name-Where == "laas.openrobots.ontology.exceptions.IllegalStatementException"-
                                          [false, false, false])
                     ]) :-
-    agm_call(revise, ['[r1 p o, r2 p]', '{"method": "add", "models": "all"}'], Reply),
-    agm_error_name(Reply, Name),
+    test_call(revise, ['[r1 p o, r2 p]', '{"method": "add", "models": "all"}'], Reply),
+    test_error_name(Reply, Name),
     agm_where_socket(Where).
 
 :- end_tests(agm_socket_revise).
@@ -1185,10 +1041,10 @@ test(bad_statement, [ setup(agm_revise_fresh),
 
 agm_revise_fresh :-
     agm_server_fresh,
-    agm_ok(add, ['[gerard rdf:type Human, toto rdf:type Agent]']),
-    agm_wait_until(( agm_agent_listed("gerard"),
-                     agm_agent_listed("toto")
-                   ), 5).
+    test_ok(add, ['[gerard rdf:type Human, toto rdf:type Agent]']),
+    test_wait_until(( agm_agent_listed("gerard"),
+                      agm_agent_listed("toto")
+                    ), 5).
 
 %   agm_where_socket(-Holds): whether `r1 p o` holds in gerard, myself
 %   and toto.
@@ -1197,8 +1053,8 @@ agm_where_socket(Holds) :-
     maplist(agm_socket_holds('[?x p o]'), [gerard, myself, toto], Holds).
 
 agm_socket_holds(Pattern, Agent, Bool) :-
-    agm_set_call(findForAgent, [Agent, x, Pattern], Xs),
-    agm_bool(memberchk("r1", Xs), Bool).
+    test_set_call(findForAgent, [Agent, x, Pattern], Xs),
+    test_bool(memberchk("r1", Xs), Bool).
 
 
                  /*******************************
@@ -1216,8 +1072,7 @@ agm_socket_holds(Pattern, Agent, Bool) :-
                ]).
 
 test(robot_session_2011, true(Problems == [])) :-
-    agm_test_dir(Dir),
-    atom_concat(Dir, '/../../shared/workloads/robot-session-2011.log', Log),
+    test_path('../../shared/workloads/robot-session-2011.log', Log),
     (   exists_file(Log)
     ->  agm_replay(Log, Problems)
     ;   format(user_error,
@@ -1229,7 +1084,7 @@ test(robot_session_2011, true(Problems == [])) :-
 :- end_tests(agm_replay).
 
 agm_start_replay :-
-    agm_fixture('scenario-2011.ttl', Scenario),
+    test_fixture('scenario-2011.ttl', Scenario),
     agm_start([ commonsense(true),
                 ontology(Scenario),
                 robot_id('JIDOKUKA_ROBOT')
@@ -1245,7 +1100,7 @@ agm_replay(Log, Problems) :-
     read_file_to_string(Log, Text, [encoding(utf8)]),
     split_string(Text, "\n", "\r", Lines),
     convlist(agm_log_request, Lines, Requests),
-    agm_port(Port),
+    test_server_port(Port),
     call_cleanup(
         foldl(agm_replay_request(Port), Requests, Problems0, []),
         forall(retract(agm_replay_conn(_, Conn)),
@@ -1255,44 +1110,15 @@ agm_replay(Log, Problems) :-
     aggregate_all(count, member(_, Problems), NBad),
     format(user_error, "~Nagent replay: ~d requests, ~d not ok~n", [N, NBad]).
 
-%   agm_log_request(+Line, -Request) is semidet.
-%
-%   request(Line, Thread, Method, Params) for a `Got incoming request`
-%   line, Params being the parameter lines; bad(Line) if it does not
-%   parse.
+%   agm_log_request(+Line, -Request) is semidet: test_log_request/2,
+%   a line without a `[thread N]` tag being bad(Line).
 
 agm_log_request(Line, Request) :-
-    sub_string(Line, _, _, After, "Got incoming request: "),
-    !,
-    sub_string(Line, _, After, 0, Call),
-    (   agm_log_thread(Line, Thread),
-        sub_string(Call, Open, _, _, "("),
-        !,
-        sub_string(Call, 0, Open, _, Method),
-        string_concat(Head, ")", Call),
-        ArgsStart is Open + 1,
-        sub_string(Head, ArgsStart, _, 0, ArgsText),
-        atomic_list_concat(['[', ArgsText, ']'], JSON),
-        catch(atom_json_term(JSON, Args, [value_string_as(string)]), _, fail),
-        is_list(Args),
-        maplist(agm_param_line, Args, Params)
-    ->  Request = request(Line, Thread, Method, Params)
-    ;   Request = bad(Line)
+    test_log_request(Line, Request0),
+    (   Request0 = request(_, "", _, _)
+    ->  Request = bad(Line)
+    ;   Request = Request0
     ).
-
-agm_log_thread(Line, Thread) :-
-    sub_string(Line, B, _, _, "[thread "),
-    !,
-    Start is B + 8,
-    sub_string(Line, Start, _, 0, Rest),
-    sub_string(Rest, L, _, _, "]"),
-    !,
-    sub_string(Rest, 0, L, _, Thread).
-
-agm_param_line(Arg, Line) :-
-    with_output_to(string(Line),
-                   json_write(current_output, Arg, [width(0)])),
-    \+ sub_string(Line, _, _, _, "\n").
 
 agm_replay_request(_, bad(Line), [Line-unparsed|Problems], Problems) :-
     !.

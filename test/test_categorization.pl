@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_categorize)).
 :- use_module(library(oro/oro_names)).
@@ -9,12 +9,6 @@
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
 :- use_module(library(random)).
-:- use_module(library(http/json)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  Tests of concept comparison (ORO-SPEC §6.5, §10, vectors of §13.9):
     getSimilarities, getDifferences, discriminate and
@@ -39,24 +33,10 @@
     Run: cd /work/main && swipl -g run_tests -t halt test/test_categorization.pl
 */
 
-:- dynamic
-    cat_test_dir/1,                     % Dir
-    cat_server/1.                       % Server
-
-:- prolog_load_context(directory, Dir),
-   retractall(cat_test_dir(_)),
-   assertz(cat_test_dir(Dir)).
-
-cat_fixture(File, Path) :-
-    cat_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
-
 %   The OpenRobots ontology, if the shared reference files are there.
 
 cat_openrobots(Path) :-
-    cat_test_dir(Dir),
-    atomic_list_concat([Dir, '/../../shared/ontologies/oro.owl'], Path0),
-    absolute_file_name(Path0, Path),
+    test_checkout_path('../shared/ontologies/oro.owl', Path),
     exists_file(Path).
 
 cat_openrobots_available :-
@@ -77,8 +57,7 @@ cat_openrobots_available :-
 %   The test ontology alone, in-process.
 
 cat_testsuite :-
-    cat_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]).
+    test_store_testsuite.
 
 %   The setup of §13.9: sheepy and baboon2.
 
@@ -746,65 +725,20 @@ cat_check_subset(Names) :-
                  *        OVER THE SOCKET       *
                  *******************************/
 
-%   cat_start(+Options): a server on a free port of 127.0.0.1.
-
-cat_start(Options) :-
-    cat_stop,
-    oro_server_start([port(0), host('127.0.0.1')|Options], Server),
-    assertz(cat_server(Server)).
+%   The unit's server (test_server_start/1, test_server_stop/0).
 
 cat_stop :-
-    forall(retract(cat_server(Server)),
-           ( cat_wait_idle(Server),
-             oro_server_stop(Server)
-           )).
-
-%   Wait (5 s at most) until the workers have seen their clients go.
-
-cat_wait_idle(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  get_time(T0),
-        Deadline is T0 + 5,
-        cat_wait_pool(Pool, Deadline)
-    ;   true
-    ).
-
-cat_wait_pool(Pool, Deadline) :-
-    (   catch(thread_pool_property(Pool, running(0)), _, true)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.01),
-        cat_wait_pool(Pool, Deadline)
-    ;   true
-    ).
+    test_server_stop.
 
 cat_start_testsuite :-
-    cat_fixture('testsuite.ttl', File),
-    cat_start([commonsense(false), ontology(File)]).
-
-%   cat_calls(+Requests, -Replies): Method-Params requests in order on
-%   one connection.
-
-cat_calls(Requests, Replies) :-
-    cat_server(Server),
-    !,
-    oro_server_port(Server, Port),
-    setup_call_cleanup(
-        oro_connect(Port, Conn),
-        maplist(cat_request(Conn), Requests, Replies),
-        oro_disconnect(Conn)).
-
-cat_request(Conn, Method-Params, Reply) :-
-    oro_call(Conn, Method, Params, Reply).
+    test_server_start_testsuite.
 
 %   cat_session(+Setup, +Method, +Params, -Reply): reset, run the
 %   Setup requests (each must succeed), then the request.
 
 cat_session(Setup, Method, Params, Reply) :-
     append([[reset-[]], Setup, [Method-Params]], Requests),
-    cat_calls(Requests, Replies),
+    test_calls(Requests, Replies),
     once(append(SetupReplies, [Reply], Replies)),
     forall(member(R, SetupReplies), R = ok(_)).
 
@@ -813,26 +747,15 @@ cat_session(Setup, Method, Params, Reply) :-
 
 cat_sorted(ok(Line), Value) :-
     !,
-    cat_json(Line, JSON),
-    cat_sort_json(JSON, Value).
+    test_json(Line, JSON),
+    test_unordered(JSON, Value).
 cat_sorted(Reply, Reply).
-
-cat_json(Line, JSON) :-
-    atom_string(Atom, Line),
-    atom_json_term(Atom, JSON, [value_string_as(string)]).
-
-cat_sort_json(List, Sorted) :-
-    is_list(List),
-    !,
-    maplist(cat_sort_json, List, Items),
-    msort(Items, Sorted).
-cat_sort_json(Value, Value).
 
 %   cat_discriminate_value(+Reply, -Value): [Total, Best], each sorted.
 
 cat_discriminate_value(ok(Line), [Total, Best]) :-
     !,
-    cat_json(Line, [Total0, Best0]),
+    test_json(Line, [Total0, Best0]),
     msort(Total0, Total),
     msort(Best0, Best).
 cat_discriminate_value(Reply, Reply).
@@ -883,8 +806,8 @@ cat_errors_mapped :-
                ]).
 
 test(listed, true(Missing == [])) :-
-    cat_calls([listSimpleMethods-[]], [ok(Line)]),
-    cat_json(Line, Listed),
+    test_calls([listSimpleMethods-[]], [ok(Line)]),
+    test_json(Line, Listed),
     subtract([ "getSimilarities(String, String)",
                "getDifferences(String, String)",
                "discriminate(Set)",
@@ -997,10 +920,10 @@ test(discriminate_for_default, true(V == [["eats"], ["eats"]])) :-
                 discriminateForAgent, ["default", "[capucin, gorilla]"], Reply),
     cat_discriminate_value(Reply, V).
 test(discriminate_for_agent, true(V == [["hasColor"], ["hasColor"]])) :-
-    cat_calls([reset-[]], _),
+    test_calls([reset-[]], _),
     oro_create_model(bob),
     oro_add(bob, ["x1 hasColor red", "x2 hasColor blue"]),
-    cat_calls([discriminateForAgent-["bob", "[x1, x2]"]], [Reply]),
+    test_calls([discriminateForAgent-["bob", "[x1, x2]"]], [Reply]),
     cat_discriminate_value(Reply, V).
 test(discriminate_for_unknown_agent,
      true(Reply == error("laas.openrobots.ontology.exceptions.AgentNotFoundException",
@@ -1055,7 +978,7 @@ test(wrong_parameter, true(Name == "NotImplementedException")) :-
 
 cat_start_openrobots :-
     cat_openrobots(File),
-    cat_start([commonsense(false), ontology(File)]).
+    test_server_start([commonsense(false), ontology(File)]).
 
 cat_seed_add(Add) :-
     cat_seed_statements(Statements),
@@ -1102,7 +1025,7 @@ test(seed_similar_animals, true(V == ["? rdf:type Animal"])) :-
 %   The seed example over oro's own common-sense ontology.
 
 cat_start_commonsense :-
-    cat_start([commonsense(true)]).
+    test_server_start([commonsense(true)]).
 
 :- begin_tests(categorization_commonsense,
                [ setup(cat_start_commonsense),

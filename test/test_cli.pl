@@ -3,20 +3,10 @@
 */
 
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(process)).
 :- use_module(library(readutil)).
 :- use_module(library(socket)).
-:- use_module(library(lists)).
-
-:- dynamic cli_test_dir/1.
-:- prolog_load_context(directory, Dir),
-   retractall(cli_test_dir(_)),
-   assertz(cli_test_dir(Dir)).
-
-cli_path(Relative, Path) :-
-    cli_test_dir(Dir),
-    atomic_list_concat([Dir, '/../', Relative], Path0),
-    absolute_file_name(Path0, Path).
 
 %!  cli_run(+Args, -ExitCode, -Output) is det.
 %
@@ -24,7 +14,7 @@ cli_path(Relative, Path) :-
 %   Output is stdout and stderr.
 
 cli_run(Args, Code, Output) :-
-    cli_path('server/oro_server.pl', Server),
+    test_checkout_path('server/oro_server.pl', Server),
     setup_call_cleanup(
         process_create(path(timeout), ['30', swipl, Server|Args],
                        [ stdout(pipe(Out)), stderr(pipe(Err)),
@@ -36,35 +26,6 @@ cli_run(Args, Code, Output) :-
         ),
         ( close(Out), close(Err) )),
     string_concat(O, E, Output).
-
-%!  cli_with_server(+Args, -Port, :Goal, -Stderr) is det.
-%
-%   Start the server with Args and --port=0, wait for its listening
-%   line, run Goal, stop the server; Stderr is what it printed there.
-
-:- meta_predicate cli_with_server(+, -, 0, -).
-
-cli_with_server(Args, Port, Goal, Stderr) :-
-    cli_path('server/oro_server.pl', Server),
-    setup_call_cleanup(
-        process_create(path(timeout), ['60', swipl, Server, '--port=0'|Args],
-                       [ stdout(pipe(Out)), stderr(pipe(Err)),
-                         process(Pid)
-                       ]),
-        ( read_line_to_string(Out, Line),
-          (   split_string(Line, ":", " ", Parts),
-              last(Parts, PortText),
-              number_string(Port, PortText)
-          ->  call(Goal)
-          ;   Port = none
-          )
-        ),
-        ( process_kill(Pid),
-          process_wait(Pid, _),
-          read_string(Err, _, Stderr),
-          close(Out),
-          close(Err)
-        )).
 
 hello(Port, Reply) :-
     setup_call_cleanup(
@@ -80,7 +41,7 @@ hello(Port, Reply) :-
         close(Pair)).
 
 shared_ontology(Name, Path) :-
-    cli_path('../shared/ontologies', Dir),
+    test_checkout_path('../shared/ontologies', Dir),
     directory_file_path(Dir, Name, Path),
     exists_file(Path).
 
@@ -99,11 +60,11 @@ test(bad_port, [true(Code \== 0)]) :-
 test(missing_ontology, [true(Code \== 0)]) :-
     cli_run(['--ontology=/nonexistent/x.owl'], Code, _).
 test(listening_default_ontology, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
-    cli_with_server([], Port, hello(Port, Reply), _).
+    test_cli_server([], Port, hello(Port, Reply), _).
 test(no_commonsense_and_robot_id, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
-    cli_path('test/fixtures/testsuite.ttl', Fixture),
+    test_checkout_path('test/fixtures/testsuite.ttl', Fixture),
     atom_concat('--ontology=', Fixture, Opt),
-    cli_with_server(['--no-commonsense', Opt, '--robot-id=ROBOT',
+    test_cli_server(['--no-commonsense', Opt, '--robot-id=ROBOT',
                      '--time-base=100'],
                     Port, hello(Port, Reply), _).
 test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
@@ -111,7 +72,7 @@ test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-ser
         shared_ontology('testsuite.oro.owl', TS)
     ->  atom_concat('--ontology=', ORO, O1),
         atom_concat('--ontology=', TS, O2),
-        cli_with_server([O1, O2], Port, hello(Port, Reply), Stderr)
+        test_cli_server([O1, O2], Port, hello(Port, Reply), Stderr)
     ;   format(user_error, "~NNotice: ../shared/ontologies absent: \c
                             skipping the public ontologies test~n", []),
         Stderr = "",

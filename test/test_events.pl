@@ -1,16 +1,11 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
 :- use_module(library(pairs)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  Tests of events (ORO-SPEC §1.4, §7, vectors §13.10, per-agent events
     of §13.11 and the seed session §13.13), over real sockets on
@@ -33,95 +28,34 @@
 
     Each unit starts its own server (port 0) and every test starts from
     oro_reset/0; helpers are prefixed ev_ (all test files load into
-    user).
+    user), those shared with the other test files are in
+    oro_test_support.pl.
 
     Run: cd /work/main && swipl -g run_tests -t halt test/test_events.pl
 */
-
-:- dynamic
-    ev_test_dir/1,                      % Dir
-    ev_server/1.                        % Server
-
-:- prolog_load_context(directory, Dir),
-   retractall(ev_test_dir(_)),
-   assertz(ev_test_dir(Dir)).
 
                  /*******************************
                  *     SERVER AND CONNECTIONS   *
                  *******************************/
 
-ev_fixture(File, Path) :-
-    ev_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
-
-%   ev_start(+Options): start the unit's server on a free port of
-%   127.0.0.1.
-
-ev_start(Options) :-
-    ev_stop,
-    oro_server_start([port(0), host('127.0.0.1')|Options], Server),
-    assertz(ev_server(Server)).
+%   The unit's server (test_server_start/1, test_server_stop/0): on
+%   the test ontology or the common-sense one.
 
 ev_start_testsuite :-
-    ev_fixture('testsuite.ttl', File),
-    ev_start([commonsense(false), ontology(File)]).
+    test_server_start_testsuite.
 
 ev_start_commonsense :-
-    ev_start([commonsense(true)]).
+    test_server_start([commonsense(true)]).
 
 ev_stop :-
-    forall(retract(ev_server(Server)),
-           ( ev_wait_connections(Server),
-             oro_server_stop(Server)
-           )).
-
-%   ev_wait_connections(+Server): wait (10 s at most) until the workers
-%   of the server have seen their clients leave.
-
-ev_wait_connections(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  ignore(ev_wait_until(ev_pool_idle(Pool), 10))
-    ;   true
-    ).
-
-ev_pool_idle(Pool) :-
-    catch(thread_pool_property(Pool, running(0)), _, true).
-
-ev_port(Port) :-
-    ev_server(Server),
-    !,
-    oro_server_port(Server, Port).
+    test_server_stop.
 
 %   ev_fresh: the store as loaded, no watcher, no connection left over
 %   from the previous test.
 
 ev_fresh :-
-    (   ev_server(Server)
-    ->  ev_wait_connections(Server)
-    ;   true
-    ),
+    test_server_wait_idle,
     oro_reset.
-
-%   ev_wait_until(:Condition, +Seconds) is semidet: poll Condition
-%   every 10 ms until it holds, for Seconds at most.
-
-:- meta_predicate ev_wait_until(0, +).
-
-ev_wait_until(Condition, Seconds) :-
-    get_time(Now),
-    Deadline is Now + Seconds,
-    ev_wait_until_(Condition, Deadline).
-
-ev_wait_until_(Condition, Deadline) :-
-    (   call(Condition)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.01),
-        ev_wait_until_(Condition, Deadline)
-    ;   fail
-    ).
 
 %   ev_connected(-Conns, :Goal): run Goal once with Conns, a list of
 %   new connections (its length fixed by the caller), closed afterwards
@@ -131,7 +65,7 @@ ev_wait_until_(Condition, Deadline) :-
 
 ev_connected(Conns, Goal) :-
     must_be(list, Conns),
-    ev_port(Port),
+    test_server_port(Port),
     setup_call_cleanup(
         maplist(oro_connect(Port), Conns),
         once(Goal),
@@ -202,11 +136,11 @@ ev_first_value(_, none).
 %   (`["a","b"]`), as a sorted list of strings.
 
 ev_values(Content, Values) :-
-    catch(term_string(List, Content), _, fail),
+    catch(test_json(Content, List), _, fail),
     is_list(List),
-    maplist(ev_string, List, Strings),
+    maplist(string, List),
     !,
-    msort(Strings, Values).
+    msort(List, Values).
 ev_values(Content, not_a_list(Content)).
 
 %   ev_parsed(+Event0, -Event): Id-Content with the content parsed by
@@ -216,15 +150,6 @@ ev_parsed(Id-Content, Id-Values) :-
     !,
     ev_values(Content, Values).
 ev_parsed(Event, Event).
-
-ev_string(X, S) :-
-    (   string(X)
-    ->  S = X
-    ;   is_list(X)
-    ->  string_codes(S, X)
-    ;   atom(X),
-        atom_string(X, S)
-    ).
 
                  /*******************************
                  *     SENTINEL AND STEPS       *
@@ -1120,7 +1045,7 @@ test(orphan_watcher_dropped, [ setup(ev_fresh),
                                true(Got == [ok, ok, ok, dropped, new_id, [[], [w-""]]])
                              ]) :-
     ev_teeth_watcher(W),
-    ev_port(Port),
+    test_server_port(Port),
     oro_connect(Port, A),
     ev_register(A, W, Ua),
     oro_disconnect(A),
@@ -1129,7 +1054,7 @@ test(orphan_watcher_dropped, [ setup(ev_fresh),
                    oro_call(B, add, ["[chicken has teeth]"], R1),
                    oro_call(B, remove, ["[chicken has teeth]"], R2),
                    oro_call(B, add, ["[chicken has teeth]"], R3),
-                   (   ev_wait_until(ev_no_watcher(Ua), 10)
+                   (   test_wait_until(ev_no_watcher(Ua), 10)
                    ->  Dropped = dropped
                    ;   Dropped = still_there
                    ),
@@ -1154,7 +1079,7 @@ test(close_method_drops_watchers, [ setup(ev_fresh),
                  ( ev_register(A, W, Ua),
                    oro_call(A, close, [], Closing)
                  )),
-    (   ev_wait_until(ev_no_watcher(Ua), 10)
+    (   test_wait_until(ev_no_watcher(Ua), 10)
     ->  Dropped = dropped
     ;   Dropped = still_there
     ),
@@ -1163,14 +1088,14 @@ test(shared_watcher_survives, [ setup(ev_fresh),
                                 true(Got == [1, [[w-""]], same_id])
                               ]) :-
     ev_teeth_watcher(W),
-    ev_port(Port),
+    test_server_port(Port),
     oro_connect(Port, A),
     ev_connected([B, C],
                  ( ev_register(A, W, U),
                    ev_register(B, W, U),
                    ev_sentinel(B, S),
                    oro_disconnect(A),
-                   (   ev_wait_until(ev_subscribers(U, 1), 10)
+                   (   test_wait_until(ev_subscribers(U, 1), 10)
                    ->  N = 1
                    ;   ev_subscribers(U, N)
                    ),
@@ -1188,7 +1113,7 @@ test(disconnected_client_gets_nothing_others_do,
        true(Got == [[[w-"[\"coco\"]"]], 0])
      ]) :-
     % Many events for a client that has gone: the server keeps serving.
-    ev_port(Port),
+    test_server_port(Port),
     oro_connect(Port, A),
     ev_register(A, ["NEW_INSTANCE", "ON_TOGGLE", "a", "[?a rdf:type Monkey]"], U),
     oro_disconnect(A),
@@ -1197,13 +1122,13 @@ test(disconnected_client_gets_nothing_others_do,
                           ( ev_ok(C, add, ["[coco rdf:type Monkey]"]),
                             ev_ok(C, remove, ["[coco rdf:type Monkey]"])
                           )),
-                   ignore(ev_wait_until(ev_no_watcher(U), 10)),
+                   ignore(test_wait_until(ev_no_watcher(U), 10)),
                    ev_register(B, ["NEW_INSTANCE", "ON_TOGGLE", "a", "[?a rdf:type Monkey]"], U2),
                    ev_sentinel(B, S),
                    ev_steps(B, C, S, [add-["[coco rdf:type Monkey]"]], Events0)
                  )),
     maplist(maplist(ev_name_id(U2, w)), Events0, Events),
-    (   ev_wait_until(ev_watcher_ids([]), 10)
+    (   test_wait_until(ev_watcher_ids([]), 10)
     ->  Left = 0
     ;   ev_watcher_ids(Ids),
         length(Ids, Left)
@@ -1224,8 +1149,7 @@ ev_reply_kind(Reply, Reply).
 
 ev_init_testsuite :-
     ev_stop,
-    ev_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]).
+    test_store_testsuite.
 
 ev_to_queue(Queue, Tag, Id, Content) :-
     thread_send_message(Queue, ev(Tag, Id, Content)).
@@ -1432,7 +1356,7 @@ ev_stress(Result) :-
     ev_connected([L], ev_stress_run(L, N, M, K, Result)).
 
 ev_stress_run(L, N, M, K, stress(Statuses, Count, BadFacts, Extra, BadReplies)) :-
-    ev_port(Port),
+    test_server_port(Port),
     findall(I-J, ( between(1, N, I), between(1, K, J) ), Facts),
     maplist(ev_stress_register(L), Facts, Watchers),
     ev_sentinel(L, S),

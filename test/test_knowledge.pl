@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 
 /*  Tests for the knowledge operations (ORO-SPEC §6.1-§6.3, vectors of
@@ -11,36 +11,16 @@
 */
 
 :- use_module(library(semweb/rdf_db)).
-:- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(filesex)).
-
-:- dynamic knowledge_test_dir/1.
-
-:- prolog_load_context(directory, Dir),
-   retractall(knowledge_test_dir(_)),
-   assertz(knowledge_test_dir(Dir)).
-
-knowledge_fixture(File, Path) :-
-    knowledge_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
 
 %   Fresh stores: the test ontology alone, or the common-sense one.
 
 knowledge_testsuite :-
-    knowledge_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]).
+    test_store_testsuite.
 
 knowledge_commonsense :-
     oro_init([]).
-
-%   knowledge_find(+Var, +Patterns, -Names): oro_find/4 on the robot
-%   model, values contracted (oro_term_text/2) and sorted.
-
-knowledge_find(Var, Patterns, Names) :-
-    oro_find(myself, Var, Patterns, Values),
-    maplist(oro_term_text, Values, Names0),
-    sort(Names0, Names).
 
 %   knowledge_count(+Var, +Patterns, -Count): number of values of Var.
 
@@ -131,7 +111,7 @@ test(counts_6_animals, [ setup(knowledge_testsuite),                 % §13.4.1
     oro_add(myself, ["oro:horse rdf:type oro:Animal"]),
     oro_add(myself, ["fish rdf:type Animal", "sparrow rdf:type Bird",
                      "Bird rdfs:subClassOf Animal"]),
-    knowledge_find(instances, ["?instances rdf:type oro:Animal"], Xs).
+    test_find(myself, instances, ["?instances rdf:type oro:Animal"], Xs).
 
 :- end_tests(add).
 
@@ -180,14 +160,14 @@ test(food, [ setup(knowledge_birds),
              true(Food == [butter, seeds])
            ]) :-
     oro_add(myself, ["sparrow eats seeds", "sparrow eats butter"]),
-    knowledge_find(food, ["sparrow eats ?food"], Food).
+    test_find(myself, food, ["sparrow eats ?food"], Food).
 test(clear_pattern, [ setup(knowledge_birds),
                       true(Food-N == []-4)
                     ]) :-
     oro_clear(myself, ["Bird rdfs:subClassOf Animal"]),
     oro_add(myself, ["sparrow eats seeds", "sparrow eats butter"]),
     oro_clear(myself, ["sparrow eats ?food"]),
-    knowledge_find(food, ["sparrow eats ?food"], Food),
+    test_find(myself, food, ["sparrow eats ?food"], Food),
     knowledge_count(x, ["?x rdf:type Animal"], N).
 test(clear_everything_about, [ setup(knowledge_testsuite),
                                true(N == 0)
@@ -201,12 +181,12 @@ test(clear_leaves_others, [ setup(knowledge_testsuite),
                             true(Xs == [baboon])
                           ]) :-
     oro_clear(myself, ["gorilla ?a ?b"]),
-    knowledge_find(x, ["?x rdf:type Monkey"], Xs).
+    test_find(myself, x, ["?x rdf:type Monkey"], Xs).
 test(clear_patterns_are_or, [ setup(knowledge_testsuite),
                               true(Xs == [])
                             ]) :-
     oro_clear(myself, ["gorilla eats ?x", "cow eats ?y"]),
-    knowledge_find(x, ["?x eats ?y"], Xs).
+    test_find(myself, x, ["?x eats ?y"], Xs).
 test(clear_literal_value, [setup(knowledge_testsuite), fail]) :-
     oro_clear(myself, ["gorilla age 12"]),
     oro_check(myself, ["gorilla age ?a"]).
@@ -257,71 +237,71 @@ knowledge_kingkong :-
 test(functional_age, [ setup(knowledge_kingkong),                   % §13.5
                        true(As == ['21'])
                      ]) :-
-    knowledge_find(a, ["gorilla age ?a", "gorilla weight ?w"], As).
+    test_find(myself, a, ["gorilla age ?a", "gorilla weight ?w"], As).
 test(functional_weight, [ setup(knowledge_kingkong),
                           true(Ws == ['99.5'])
                         ]) :-
-    knowledge_find(w, ["gorilla age ?a", "gorilla weight ?w"], Ws).
+    test_find(myself, w, ["gorilla age ?a", "gorilla weight ?w"], Ws).
 test(other_subjects_untouched, [ setup(knowledge_kingkong),
                                  true(As == ['12'])
                                ]) :-
-    knowledge_find(a, ["cow age ?a"], As).
+    test_find(myself, a, ["cow age ?a"], As).
 test(label_is_not_functional, [ setup(knowledge_kingkong),
                                 true(Ls == ['KingKong', 'Lord of the rings'])
                               ]) :-
     oro_update(myself, ["gorilla age 99",
                         "gorilla rdfs:label \"Lord of the rings\"",
                         "gorilla likeIcecream true"]),
-    knowledge_find(l, ["gorilla age ?a", "gorilla rdfs:label ?l",
-                       "gorilla likeIcecream ?c"], Ls).
+    test_find(myself, l, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                          "gorilla likeIcecream ?c"], Ls).
 test(second_update_age, [ setup(knowledge_kingkong),
                           true(As == ['99'])
                         ]) :-
     oro_update(myself, ["gorilla age 99",
                         "gorilla rdfs:label \"Lord of the rings\"",
                         "gorilla likeIcecream true"]),
-    knowledge_find(a, ["gorilla age ?a", "gorilla rdfs:label ?l",
-                       "gorilla likeIcecream ?c"], As).
+    test_find(myself, a, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                          "gorilla likeIcecream ?c"], As).
 test(unknown_predicate_added, [ setup(knowledge_kingkong),
                                 true(Cs == [true])
                               ]) :-
     oro_update(myself, ["gorilla age 99",
                         "gorilla rdfs:label \"Lord of the rings\"",
                         "gorilla likeIcecream true"]),
-    knowledge_find(c, ["gorilla age ?a", "gorilla rdfs:label ?l",
-                       "gorilla likeIcecream ?c"], Cs).
+    test_find(myself, c, ["gorilla age ?a", "gorilla rdfs:label ?l",
+                          "gorilla likeIcecream ?c"], Cs).
 test(functional_declared_at_run_time, [ setup(knowledge_testsuite),
                                         true(Ms == [sad])
                                       ]) :-
     oro_add(myself, ["hasMood rdf:type owl:FunctionalProperty",
                      "gorilla hasMood happy"]),
     oro_update(myself, ["gorilla hasMood sad"]),
-    knowledge_find(m, ["gorilla hasMood ?m"], Ms).
+    test_find(myself, m, ["gorilla hasMood ?m"], Ms).
 test(non_functional_adds, [ setup(knowledge_testsuite),
                             true(Ms == [happy, sad])
                           ]) :-
     oro_add(myself, ["gorilla hasMood happy"]),
     oro_update(myself, ["gorilla hasMood sad"]),
-    knowledge_find(m, ["gorilla hasMood ?m"], Ms).
+    test_find(myself, m, ["gorilla hasMood ?m"], Ms).
 test(commonsense_functional_object, [ setup(knowledge_commonsense),
                                       true(Cs == [blue])
                                     ]) :-
     oro_add(myself, ["cup1 hasColor red"]),
     oro_update(myself, ["cup1 hasColor blue"]),
-    knowledge_find(c, ["cup1 hasColor ?c"], Cs).
+    test_find(myself, c, ["cup1 hasColor ?c"], Cs).
 test(commonsense_functional_boolean, [ setup(knowledge_commonsense),
                                        true(Vs == [false])
                                      ]) :-
     oro_add(myself, ["cup1 isVisible true"]),
     oro_update(myself, ["cup1 isVisible false"]),
-    knowledge_find(v, ["cup1 isVisible ?v"], Vs).
+    test_find(myself, v, ["cup1 isVisible ?v"], Vs).
 test(malformed_changes_nothing, [ setup(knowledge_testsuite),
                                   true(As == ['12'])
                                 ]) :-
     catch(oro_update(myself, ["gorilla age 21", "toto titi"]),
           error(syntax_error(_), _),
           true),
-    knowledge_find(a, ["gorilla age ?a"], As).
+    test_find(myself, a, ["gorilla age ?a"], As).
 test(unknown_model, [ setup(knowledge_testsuite),
                       error(existence_error(agent, nobody))
                     ]) :-
@@ -379,15 +359,15 @@ test(unknown_model, [ setup(knowledge_testsuite),
 test(monkeys, [ setup(knowledge_testsuite),                          % §13.3
                 true(Xs == [baboon, gorilla])
               ]) :-
-    knowledge_find(x, ["?x rdf:type oro:Monkey"], Xs).
+    test_find(myself, x, ["?x rdf:type oro:Monkey"], Xs).
 test(question_mark_var, [ setup(knowledge_testsuite),
                           true(Xs == [baboon, gorilla])
                         ]) :-
-    knowledge_find('?x', ["?x rdf:type Monkey"], Xs).
+    test_find(myself, '?x', ["?x rdf:type Monkey"], Xs).
 test(string_var, [ setup(knowledge_testsuite),
                    true(Xs == [baboon, gorilla])
                  ]) :-
-    knowledge_find("x", ["?x rdf:type Monkey"], Xs).
+    test_find(myself, "x", ["?x rdf:type Monkey"], Xs).
 test(iris_returned, [ setup(knowledge_testsuite),
                       true(Xs == ['http://kb.openrobots.org#baboon',
                                   'http://kb.openrobots.org#gorilla'])
@@ -416,33 +396,33 @@ test(unknown_model, [ setup(knowledge_testsuite),
 test(conjunction, [ setup(knowledge_testsuite),
                     true(Xs == [baboon])
                   ]) :-
-    knowledge_find(x, ["?x rdf:type Monkey", "?x isFemale true"], Xs).
+    test_find(myself, x, ["?x rdf:type Monkey", "?x isFemale true"], Xs).
 test(shared_variables, [ setup(knowledge_testsuite),
                          true(Xs == [])
                        ]) :-
-    knowledge_find(x, ["?x rdf:type Plant", "?x rdf:type Monkey"], Xs).
+    test_find(myself, x, ["?x rdf:type Plant", "?x rdf:type Monkey"], Xs).
 test(labels, [ setup(knowledge_testsuite),
                true(Ls == ['baboon monkey', babouin])
              ]) :-
-    knowledge_find(label, ["?mysterious rdf:type oro:Monkey",
-                           "?mysterious oro:weight ?value",
-                           "baboon rdfs:label ?label"], Ls).
+    test_find(myself, label, ["?mysterious rdf:type oro:Monkey",
+                              "?mysterious oro:weight ?value",
+                              "baboon rdfs:label ?label"], Ls).
 test(no_match, [ setup(knowledge_testsuite),
                  true(Xs == [])
                ]) :-
-    knowledge_find(mysterious, ["?mysterious oro:eats oro:banana_tree",
-                                "?mysterious oro:isFemale true^^xsd:boolean"],
-                   Xs).
+    test_find(myself, mysterious, ["?mysterious oro:eats oro:banana_tree",
+                                   "?mysterious oro:isFemale true^^xsd:boolean"],
+                      Xs).
 test(typed_boolean, [ setup(knowledge_testsuite),
                       true(Xs == [baboon, fish])
                     ]) :-
     oro_add(myself, ["oro:fish oro:isFemale \"true\"^^xsd:boolean"]),
-    knowledge_find(i, ["?i rdf:type owl:Thing", "?i oro:isFemale true"], Xs).
+    test_find(myself, i, ["?i rdf:type owl:Thing", "?i oro:isFemale true"], Xs).
 test(domain_inference, [ setup(knowledge_testsuite),
                          true(Xs == [baboon, cow, gorilla, sheep])
                        ]) :-
     oro_add(myself, ["sheep eats grass"]),
-    knowledge_find(animals, ["?animals rdf:type Animal"], Xs).
+    test_find(myself, animals, ["?animals rdf:type Animal"], Xs).
 test(term_patterns, [ setup(knowledge_testsuite),
                       true(Xs == ['http://kb.openrobots.org#baboon',
                                   'http://kb.openrobots.org#gorilla'])
@@ -542,17 +522,17 @@ knowledge_seed :-
 test(is_at_table, [ setup(knowledge_seed),
                     true(Os == [fork1])
                   ]) :-
-    knowledge_find(o, ["?o isAt kitchen_table"], Os).
+    test_find(myself, o, ["?o isAt kitchen_table"], Os).
 test(no_artifact_yet, [ setup(knowledge_seed),
                         true(Os == [])
                       ]) :-
-    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+    test_find(myself, o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
 test(fork_tableware, [ setup(knowledge_seed),
                        true(Os == [fork1])
                      ]) :-
     oro_add(myself, ["Fork rdfs:subClassOf Tableware",
                      "Glass rdfs:subClassOf Tableware"]),
-    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+    test_find(myself, o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
 test(fork_artifact, [setup(knowledge_seed)]) :-
     oro_add(myself, ["Fork rdfs:subClassOf Tableware"]),
     oro_check(myself, ["fork1 rdf:type Artifact"]).
@@ -562,7 +542,7 @@ test(glass_on_table, [ setup(knowledge_seed),
     oro_add(myself, ["Fork rdfs:subClassOf Tableware",
                      "Glass rdfs:subClassOf Tableware"]),
     oro_add(myself, ["glass1 isOn kitchen_table"]),
-    knowledge_find(o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
+    test_find(myself, o, ["?o isAt kitchen_table", "?o rdf:type Artifact"], Os).
 
 :- end_tests(seed_session).
 
@@ -575,7 +555,7 @@ test(glass_on_table, [ setup(knowledge_seed),
 
 knowledge_save_init(Dir) :-
     knowledge_tmp_dir(Dir),
-    knowledge_fixture('testsuite.ttl', File),
+    test_fixture('testsuite.ttl', File),
     oro_init([commonsense(false), ontologies([File]), save_dir(Dir)]).
 
 knowledge_reload(Dir, Name) :-
@@ -604,7 +584,7 @@ test(reloaded_label, [ setup(knowledge_save_init(Dir)),
     oro_add(myself, ["fish rdfs:label \"Wanda\""]),
     oro_save(myself, 'out.owl'),
     knowledge_reload(Dir, 'out.owl'),
-    knowledge_find(l, ["fish rdfs:label ?l"], Ls).
+    test_find(myself, l, ["fish rdfs:label ?l"], Ls).
 test(reloaded_inference, [ setup(knowledge_save_init(Dir)),
                            cleanup(delete_directory_and_contents(Dir))
                          ]) :-

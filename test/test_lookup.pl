@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 
 /*  Tests for labels, lookup and descriptions of resources (ORO-SPEC
@@ -15,19 +15,8 @@
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 
-:- dynamic lookup_test_dir/1.
-
-:- prolog_load_context(directory, Dir),
-   retractall(lookup_test_dir(_)),
-   assertz(lookup_test_dir(Dir)).
-
-lookup_fixture(File, Path) :-
-    lookup_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
-
 lookup_testsuite :-
-    lookup_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]).
+    test_store_testsuite.
 
 %   The store of §13.6: a label for gorilla and a human.
 

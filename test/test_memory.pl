@@ -1,22 +1,16 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
 :- use_module(library(settings)).
-:- use_module(library(http/json)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro/oro_memory),
               [ oro_memory_profile/2,
                 oro_memory_lifetime/2,
                 oro_memory_sync/0
               ]).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  Tests for memory profiles (ORO-SPEC §9, add(Set, String) of §6.1,
     the vectors of §13.12), through the Prolog API (oro_add/3,
@@ -33,7 +27,7 @@
     ON_FALSE); no reification triples (`rs_...`) are ever visible.
 
     A small time base (50 ms; 5 ms to see EPISODIC facts go) keeps the
-    tests short.  Waits are on conditions (polling every 20 ms, 5 s
+    tests short.  Waits are on conditions (polling every 10 ms, 5 s
     at most), never fixed sleeps.  Tests marked blocked/1 show bugs of
     the implementation: the reason says which.
 
@@ -41,7 +35,6 @@
 */
 
 :- dynamic
-    agm_mem_server/1,                   % Server
     agm_mem_started_time_base/1.        % Milliseconds
 
 
@@ -94,26 +87,6 @@ agm_mem_statements_with_deadline(Model, Statements) :-
     findall(S, member(_-S-_, Deadlines), Statements0),
     sort(Statements0, Statements).
 
-%   agm_mem_wait_until(:Condition, +Seconds) is semidet: poll Condition
-%   every 20 ms until it holds or Seconds have passed.
-
-:- meta_predicate agm_mem_wait_until(0, +).
-
-agm_mem_wait_until(Condition, Seconds) :-
-    get_time(Now),
-    Deadline is Now + Seconds,
-    agm_mem_wait_until_(Condition, Deadline).
-
-agm_mem_wait_until_(Condition, Deadline) :-
-    (   call(Condition)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.02),
-        agm_mem_wait_until_(Condition, Deadline)
-    ;   fail
-    ).
-
 %   agm_mem_forgotten(:Gone, +Deadline, -Outcome): wait (5 s at most)
 %   until Gone holds.  Outcome is `after_deadline` if it did not hold
 %   before Deadline (ms since the epoch), early(Ms) if it held Ms
@@ -122,7 +95,7 @@ agm_mem_wait_until_(Condition, Deadline) :-
 :- meta_predicate agm_mem_forgotten(0, +, -).
 
 agm_mem_forgotten(Gone, Deadline, Outcome) :-
-    (   agm_mem_wait_until(Gone, 5)
+    (   test_wait_until(Gone, 5)
     ->  agm_mem_now(Seen),
         (   Seen >= Deadline
         ->  Outcome = after_deadline
@@ -136,7 +109,7 @@ agm_mem_forgotten(Gone, Deadline, Outcome) :-
 %   has passed Deadline (ms since the epoch).
 
 agm_mem_wait_after(Deadline) :-
-    agm_mem_wait_until(( agm_mem_now(Now), Now > Deadline ), 5).
+    test_wait_until(( agm_mem_now(Now), Now > Deadline ), 5).
 
 %   agm_mem_short_marker(+Model, -Outcome): add `marker is set` as
 %   SHORTTERM and wait until it is forgotten: every short-term fact
@@ -230,18 +203,18 @@ test(short_term_deadline, [ setup(agm_mem_fresh),
     agm_mem_now(T0),
     oro_add(myself, ["superman rdf:type Animal"], 'SHORTTERM'),
     agm_mem_deadline_of(myself, "superman rdf:type Animal", shortterm, D),
-    agm_bool_mem(D >= T0 + 500, Late),
-    agm_bool_mem(agm_mem_holds(myself, "superman rdf:type Animal"), Holds),
+    test_bool(D >= T0 + 500, Late),
+    test_bool(agm_mem_holds(myself, "superman rdf:type Animal"), Holds),
     agm_mem_now(T1),
-    agm_bool_mem(T1 < D, Before).
+    test_bool(T1 < D, Before).
 test(episodic_deadline, [ setup(agm_mem_fresh),
                           true(Late-Holds == true-true)
                         ]) :-
     agm_mem_now(T0),
     oro_add(myself, ["snail eats grass"], episodic),
     agm_mem_deadline_of(myself, "snail eats grass", episodic, D),
-    agm_bool_mem(D >= T0 + 15000, Late),
-    agm_bool_mem(agm_mem_holds(myself, "snail eats grass"), Holds).
+    test_bool(D >= T0 + 15000, Late),
+    test_bool(agm_mem_holds(myself, "snail eats grass"), Holds).
 test(any_case, [ setup(agm_mem_fresh),
                  true(Ss == ["a1 p o", "a2 p o", "a3 p o"])
                ]) :-
@@ -273,19 +246,19 @@ test(refresh_moves_deadline, [ setup(agm_mem_fresh),
     oro_add(myself, ["f p o"], 'SHORTTERM'),
     agm_mem_deadline_of(myself, "f p o", shortterm, D1),
     agm_mem_now(T0),
-    agm_mem_wait_until(( agm_mem_now(T), T > T0 + 20 ), 5),
+    test_wait_until(( agm_mem_now(T), T > T0 + 20 ), 5),
     oro_add(myself, ["f p o"], 'SHORTTERM'),
     agm_mem_deadlines(myself, Ds),
     findall(D, member(D-"f p o"-_, Ds), [D2|Rest]),
     length([D2|Rest], N),
-    agm_bool_mem(D2 > D1, Later).
+    test_bool(D2 > D1, Later).
 test(no_reification, [ setup(agm_mem_fresh),
                        true(r(Statements, Rs, Infos) == r([], [], []))
                      ]) :-
     oro_add(myself, ["superman rdf:type Animal"], 'SHORTTERM'),
     oro_add(myself, ["snail eats grass"], 'EPISODIC'),
     oro_add(myself, ["snail eats grass"], 'SHORTTERM'),
-    agm_mem_find(x, ["?x rdf:type rdf:Statement"], Statements),
+    test_find(myself, x, ["?x rdf:type rdf:Statement"], Statements),
     findall(S, ( rdf(S, _, _),
                  atom(S),
                  sub_atom(S, _, _, _, '#rs_')
@@ -322,19 +295,6 @@ test(bad_batch_no_deadline, [ setup(agm_mem_fresh),
 
 :- end_tests(agm_mem_profiles).
 
-agm_mem_find(Var, Patterns, Names) :-
-    oro_find(myself, Var, Patterns, Values),
-    maplist(oro_term_text, Values, Names0),
-    sort(Names0, Names).
-
-:- meta_predicate agm_bool_mem(0, -).
-
-agm_bool_mem(Goal, Bool) :-
-    (   call(Goal)
-    ->  Bool = true
-    ;   Bool = false
-    ).
-
 
                  /*******************************
                  *          FORGETTING          *
@@ -365,20 +325,20 @@ test(sync_forgets_what_is_due, [ setup(agm_mem_fresh(10)),
     agm_mem_deadline_of(myself, "f p o", shortterm, D),
     agm_mem_wait_after(D),
     oro_memory_sync,
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
 test(long_term_stays, [ setup(agm_mem_fresh(20)),
                         true(Marker-Holds == after_deadline-true)
                       ]) :-
     oro_add(myself, ["f p o"]),
     oro_add(myself, ["f p o"], 'SHORTTERM'),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
 test(unknown_profile_stays, [ setup(agm_mem_fresh(20)),
                               true(Marker-Holds == after_deadline-true)
                             ]) :-
     oro_add(myself, ["x y z"], bogus),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "x y z"), Holds).
+    test_bool(agm_mem_holds(myself, "x y z"), Holds).
 test(short_term_then_long_term_stays,
      [ setup(agm_mem_fresh(20)),
        true(Marker-Holds == after_deadline-true)
@@ -386,7 +346,7 @@ test(short_term_then_long_term_stays,
     oro_add(myself, ["f p o"], 'SHORTTERM'),
     oro_add(myself, ["f p o"]),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
 test(removed_then_long_term_stays, [ setup(agm_mem_fresh(20)),
                                      true(Marker-Holds == after_deadline-true)
                                    ]) :-
@@ -394,7 +354,7 @@ test(removed_then_long_term_stays, [ setup(agm_mem_fresh(20)),
     oro_remove(myself, ["f p o"]),
     oro_add(myself, ["f p o"]),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds).
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
 test(refresh, [ setup(agm_mem_fresh(20)),
                 true(Outcome == after_deadline)
               ]) :-
@@ -414,7 +374,7 @@ test(short_and_episodic, [ setup(agm_mem_fresh(5)),
     oro_add(myself, ["f p o"], 'EPISODIC'),
     agm_mem_deadline_of(myself, "f p o", episodic, D),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds),
+    test_bool(agm_mem_holds(myself, "f p o"), Holds),
     agm_mem_forgotten(agm_mem_gone(myself, "f p o"), D, Outcome).
 test(episodic_and_short, [ setup(agm_mem_fresh(5)),
                            true(Marker-Holds-Outcome ==
@@ -424,7 +384,7 @@ test(episodic_and_short, [ setup(agm_mem_fresh(5)),
     oro_add(myself, ["f p o"], 'SHORTTERM'),
     agm_mem_deadline_of(myself, "f p o", episodic, D),
     agm_mem_short_marker(myself, Marker),
-    agm_bool_mem(agm_mem_holds(myself, "f p o"), Holds),
+    test_bool(agm_mem_holds(myself, "f p o"), Holds),
     agm_mem_forgotten(agm_mem_gone(myself, "f p o"), D, Outcome).
 test(inferences_updated, [ setup(agm_mem_fresh(20)),
                            true(Before-Outcome-After ==
@@ -432,11 +392,11 @@ test(inferences_updated, [ setup(agm_mem_fresh(20)),
                          ]) :-
     oro_add(myself, ["Hero rdfs:subClassOf Animal"]),
     oro_add(myself, ["superman rdf:type Hero"], 'SHORTTERM'),
-    agm_mem_find(x, ["?x rdf:type Animal"], Before),
+    test_find(myself, x, ["?x rdf:type Animal"], Before),
     agm_mem_deadline_of(myself, "superman rdf:type Hero", shortterm, D),
     agm_mem_forgotten(agm_mem_gone(myself, "superman rdf:type Animal"), D,
                       Outcome),
-    agm_mem_find(x, ["?x rdf:type Animal"], After).
+    test_find(myself, x, ["?x rdf:type Animal"], After).
 test(new_instance_on_false, [ setup(agm_mem_fresh(20)),
                               true(Names-Outcome == [superman]-after_deadline)
                             ]) :-
@@ -470,7 +430,7 @@ test(agent_model, [ setup(agm_mem_fresh(20)),
     oro_add(gerard, ["hen has teeth"], 'SHORTTERM'),
     agm_mem_deadline_of(gerard, "hen has teeth", shortterm, D),
     agm_mem_forgotten(agm_mem_gone(gerard, "hen has teeth"), D, Outcome),
-    agm_bool_mem(agm_mem_holds(myself, "hen has teeth"), Robot).
+    test_bool(agm_mem_holds(myself, "hen has teeth"), Robot).
 test(agent_model_event, [ setup(agm_mem_fresh(20)),
                           true(Names-Outcome == [hen]-after_deadline)
                         ]) :-
@@ -493,63 +453,23 @@ test(agent_model_event, [ setup(agm_mem_fresh(20)),
 
 agm_mem_start :-
     agm_mem_stop,
-    oro_server_start([ port(0), host('127.0.0.1'), commonsense(true),
-                       robot_id('ROBOT'), time_base(50)
-                     ], Server),
-    setting(oro_memory:time_base, TimeBase),
+    test_server_start_time_base([ commonsense(true),
+                                  robot_id('ROBOT'),
+                                  time_base(50)
+                                ], TimeBase),
     retractall(agm_mem_started_time_base(_)),
-    assertz(agm_mem_started_time_base(TimeBase)),
-    set_setting(oro_memory:time_base, 50),
-    assertz(agm_mem_server(Server)).
+    assertz(agm_mem_started_time_base(TimeBase)).
 
 agm_mem_stop :-
-    forall(retract(agm_mem_server(Server)),
-           ( agm_mem_wait_connections(Server),
-             oro_events_sync,
-             oro_server_stop(Server)
-           )).
-
-agm_mem_wait_connections(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  ignore(agm_mem_wait_until(agm_mem_pool_idle(Pool), 10))
-    ;   true
-    ).
-
-agm_mem_pool_idle(Pool) :-
-    catch(thread_pool_property(Pool, running(0)), _, true).
-
-agm_mem_port(Port) :-
-    agm_mem_server(Server),
-    !,
-    oro_server_port(Server, Port).
-
-:- meta_predicate agm_mem_connected(-, 0).
-
-agm_mem_connected(Conn, Goal) :-
-    agm_mem_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, Conn),
-        once(Goal),
-        oro_disconnect(Conn)).
-
-agm_mem_call(Method, Params, Reply) :-
-    agm_mem_connected(Conn, oro_call(Conn, Method, Params, Reply)).
-
-agm_mem_ok(Method, Params) :-
-    agm_mem_call(Method, Params, Reply),
-    (   Reply = ok(_)
-    ->  true
-    ;   throw(agm_mem_unexpected_reply(Method-Params, Reply))
-    ).
+    test_server_stop_synced.
 
 agm_mem_server_fresh :-
-    agm_mem_ok(reset, []).
+    test_ok(reset, []).
 
 %   agm_mem_socket_check(+Pattern, -Reply): check over the socket.
 
 agm_mem_socket_check(Pattern, Reply) :-
-    agm_mem_call(check, [Pattern], Reply).
+    test_call(check, [Pattern], Reply).
 
 agm_mem_socket_gone(Pattern) :-
     agm_mem_socket_check(Pattern, ok("false")).
@@ -571,22 +491,8 @@ agm_mem_socket_forgotten_by(Deadlines, Pattern, Statement, Outcome) :-
     ).
 
 agm_mem_socket_marker(Outcome) :-
-    agm_mem_ok(add, ['[marker is set]', 'SHORTTERM']),
+    test_ok(add, ['[marker is set]', 'SHORTTERM']),
     agm_mem_socket_forgotten('[marker is set]', "marker is set", Outcome).
-
-agm_mem_json(Line, Value) :-
-    setup_call_cleanup(
-        open_string(Line, In),
-        json_read_dict(In, Value, [value_string_as(string)]),
-        close(In)).
-
-agm_mem_set_call(Method, Params, Set) :-
-    agm_mem_call(Method, Params, Reply),
-    (   Reply = ok(Line)
-    ->  agm_mem_json(Line, List),
-        msort(List, Set)
-    ;   throw(agm_mem_unexpected_reply(Method-Params, Reply))
-    ).
 
 agm_mem_rs_name(Name) :-
     (   sub_string(Name, _, _, _, "rs_")
@@ -611,19 +517,19 @@ test(vector_13_12, [ setup(agm_mem_server_fresh),
                           r(ok(""), ok("true"), after_deadline,
                             "[\"superman\"]"))
                    ]) :-
-    agm_mem_connected(Conn,
-                      ( oro_call(Conn, registerEvent,
-                                 ['NEW_INSTANCE', 'ON_FALSE', a,
-                                  '[?a rdf:type Animal]'], ok(_)),
-                        oro_call(Conn, add, ['[superman rdf:type Animal]',
-                                             'SHORTTERM'], Add),
-                        oro_call(Conn, check, ['[superman rdf:type Animal]'],
-                                 Check),
-                        agm_mem_socket_forgotten('[superman rdf:type Animal]',
-                                                 "superman rdf:type Animal",
-                                                 Outcome),
-                        oro_next_event(Conn, E, 5)
-                      )),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEvent,
+                              ['NEW_INSTANCE', 'ON_FALSE', a,
+                               '[?a rdf:type Animal]'], ok(_)),
+                     oro_call(Conn, add, ['[superman rdf:type Animal]',
+                                          'SHORTTERM'], Add),
+                     oro_call(Conn, check, ['[superman rdf:type Animal]'],
+                              Check),
+                     agm_mem_socket_forgotten('[superman rdf:type Animal]',
+                                              "superman rdf:type Animal",
+                                              Outcome),
+                     oro_next_event(Conn, E, 5)
+                   )),
     (   E = event(_, Event)
     ->  true
     ;   Event = E
@@ -631,14 +537,14 @@ test(vector_13_12, [ setup(agm_mem_server_fresh),
 test(fact_checking_on_false, [ setup(agm_mem_server_fresh),
                                true(Event == "")
                              ]) :-
-    agm_mem_connected(Conn,
-                      ( oro_call(Conn, registerEvent,
-                                 ['FACT_CHECKING', 'ON_FALSE',
-                                  '[superman rdf:type Animal]'], ok(_)),
-                        oro_call(Conn, add, ['[superman rdf:type Animal]',
-                                             'SHORTTERM'], ok(_)),
-                        oro_next_event(Conn, E, 5)
-                      )),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEvent,
+                              ['FACT_CHECKING', 'ON_FALSE',
+                               '[superman rdf:type Animal]'], ok(_)),
+                     oro_call(Conn, add, ['[superman rdf:type Animal]',
+                                          'SHORTTERM'], ok(_)),
+                     oro_next_event(Conn, E, 5)
+                   )),
     (   E = event(_, Event)
     ->  true
     ;   Event = E
@@ -648,16 +554,16 @@ test(episodic_survives, [ setup(agm_mem_server_fresh),
                                r(after_deadline, ok("true"), true))
                         ]) :-
     agm_mem_now(T0),
-    agm_mem_ok(add, ['[snail eats grass]', 'EPISODIC']),
+    test_ok(add, ['[snail eats grass]', 'EPISODIC']),
     agm_mem_socket_marker(Marker),
     agm_mem_socket_check('[snail eats grass]', Check),
     agm_mem_deadline_of(myself, "snail eats grass", episodic, D),
-    agm_bool_mem(D >= T0 + 300 * 50, Late).
+    test_bool(D >= T0 + 300 * 50, Late).
 test(unknown_profile_is_default, [ setup(agm_mem_server_fresh),
                                    true(r(Marker, Check, Ds) ==
                                         r(after_deadline, ok("true"), []))
                                  ]) :-
-    agm_mem_ok(add, ['[x y z]', bogus]),
+    test_ok(add, ['[x y z]', bogus]),
     oro_memory_deadlines(myself, Ds),
     agm_mem_socket_marker(Marker),
     agm_mem_socket_check('[x y z]', Check).
@@ -665,10 +571,10 @@ test(long_term_profiles, [ setup(agm_mem_server_fresh),
                            true(r(Marker, Check, Ds) ==
                                 r(after_deadline, ok("true"), []))
                          ]) :-
-    agm_mem_ok(add, ['[a1 p o]', 'LONGTERM']),
-    agm_mem_ok(add, ['[a2 p o]', 'default']),
-    agm_mem_ok(add, ['[a3 p o]', 'LongTerm']),
-    agm_mem_ok(add, ['[a1 p o, a2 p o, a3 p o]', 'SHORTTERM']),
+    test_ok(add, ['[a1 p o]', 'LONGTERM']),
+    test_ok(add, ['[a2 p o]', 'default']),
+    test_ok(add, ['[a3 p o]', 'LongTerm']),
+    test_ok(add, ['[a1 p o, a2 p o, a3 p o]', 'SHORTTERM']),
     oro_memory_deadlines(myself, Ds),
     agm_mem_socket_marker(Marker),
     agm_mem_socket_check('[a1 p o, a2 p o, a3 p o]', Check).
@@ -677,9 +583,9 @@ test(any_case, [ setup(agm_mem_server_fresh),
                                      [after_deadline, after_deadline,
                                       after_deadline])
                ]) :-
-    agm_mem_ok(add, ['[a1 p o]', shortterm]),
-    agm_mem_ok(add, ['[a2 p o]', 'ShortTerm']),
-    agm_mem_ok(add, ['[a3 p o]', 'SHORTTERM']),
+    test_ok(add, ['[a1 p o]', shortterm]),
+    test_ok(add, ['[a2 p o]', 'ShortTerm']),
+    test_ok(add, ['[a3 p o]', 'SHORTTERM']),
     agm_mem_deadlines(myself, Deadlines),
     findall(S, member(_-S-shortterm, Deadlines), Ss0),
     sort(Ss0, Ss),
@@ -690,25 +596,25 @@ test(any_case, [ setup(agm_mem_server_fresh),
 test(no_reification_visible, [ setup(agm_mem_server_fresh),
                                true(r(Statements, Subjects, Infos) == r([], [], []))
                              ]) :-
-    agm_mem_ok(add, ['[superman rdf:type Animal]', 'SHORTTERM']),
-    agm_mem_ok(add, ['[snail eats grass]', 'EPISODIC']),
-    agm_mem_set_call(find, [x, '[?x rdf:type rdf:Statement]'], Statements),
-    agm_mem_set_call(find, [s, '[?s ?p ?o]'], All),
+    test_ok(add, ['[superman rdf:type Animal]', 'SHORTTERM']),
+    test_ok(add, ['[snail eats grass]', 'EPISODIC']),
+    test_set_call(find, [x, '[?x rdf:type rdf:Statement]'], Statements),
+    test_set_call(find, [s, '[?s ?p ?o]'], All),
     include(agm_mem_rs_name, All, Subjects),
-    agm_mem_set_call(getInfos, [superman], AllInfos),
+    test_set_call(getInfos, [superman], AllInfos),
     include(agm_mem_rs_name, AllInfos, Infos).
 test(short_term_for_agent, [ setup(agm_mem_server_fresh),
                              true(r(Found, Gone, Robot) ==
                                   r(ok("[\"hen\"]"), true, ok("true")))
                            ]) :-
-    agm_mem_ok(add, ['[gerard rdf:type Human, hen has teeth]']),
-    agm_mem_ok(addForAgent, [gerard, '[hen has teeth]', 'SHORTTERM']),
-    agm_mem_call(findForAgent, [gerard, x, '[?x has teeth]'], Found),
-    agm_bool_mem(agm_mem_wait_until(
-                     agm_mem_call(findForAgent, [gerard, x, '[?x has teeth]'],
-                                  ok("[]")),
-                     5),
-                 Gone),
+    test_ok(add, ['[gerard rdf:type Human, hen has teeth]']),
+    test_ok(addForAgent, [gerard, '[hen has teeth]', 'SHORTTERM']),
+    test_call(findForAgent, [gerard, x, '[?x has teeth]'], Found),
+    test_bool(test_wait_until(
+               test_call(findForAgent, [gerard, x, '[?x has teeth]'],
+                         ok("[]")),
+               5),
+              Gone),
     agm_mem_socket_check('[hen has teeth]', Robot).
 
 :- end_tests(agm_mem_socket).

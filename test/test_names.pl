@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 
 /*  Tests for names (ORO-SPEC §4.1): expansion of the names clients
@@ -13,12 +13,6 @@
 */
 
 :- use_module(library(semweb/rdf_db)).
-
-%   names_literal(+Type, +Lex, -Literal): the rdf_db typed literal,
-%   Type written with a prefix (xsd:int).
-
-names_literal(Type, Lex, literal(type(IRI, Lex))) :-
-    rdf_global_id(Type, IRI).
 
 
                  /*******************************
@@ -111,19 +105,19 @@ test(resource_term_text_default, true(Text == 'Monkey')) :-
 :- begin_tests(literal_text).
 
 test(int, true(Text == '12')) :-
-    names_literal(xsd:int, '12', L),
+    test_literal(xsd:int, '12', L),
     oro_term_text(L, Text).
 test(double, true(Text == '48.5')) :-
-    names_literal(xsd:double, '48.5', L),
+    test_literal(xsd:double, '48.5', L),
     oro_term_text(L, Text).
 test(boolean, true(Text == true)) :-
-    names_literal(xsd:boolean, true, L),
+    test_literal(xsd:boolean, true, L),
     oro_term_text(L, Text).
 test(xsd_string, true(Text == 'Lord of the rings')) :-
-    names_literal(xsd:string, 'Lord of the rings', L),
+    test_literal(xsd:string, 'Lord of the rings', L),
     oro_term_text(L, Text).
 test(other_datatype_bare, true(Text == '2014-03-01T10:00:00')) :-
-    names_literal(xsd:dateTime, '2014-03-01T10:00:00', L),
+    test_literal(xsd:dateTime, '2014-03-01T10:00:00', L),
     oro_term_text(L, Text).
 test(language_tag_dropped, true(Text == 'baboon monkey')) :-
     oro_term_text(literal(lang(en, 'baboon monkey')), Text).

@@ -4,11 +4,8 @@
     Run: cd /work/main && swipl -g "run_tests" -t halt test/test_parse.pl
 */
 
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/../prolog', Lib),
-   asserta(user:file_search_path(library, Lib)).
-
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro/oro_parse)).
 
@@ -17,12 +14,6 @@
 obj(Text, Object) :-
     atomics_to_string(["s p ", Text], Statement),
     oro_parse_statement(Statement, rdf(_, _, Object)).
-
-%   lit(+Type, +Lex, -Literal): the typed literal term, Type written
-%   with a prefix (xsd:int).
-
-lit(Type, Lex, literal(type(IRI, Lex))) :-
-    rdf_global_id(Type, IRI).
 
 oro(Local, IRI) :-
     rdf_global_id(oro:Local, IRI).
@@ -276,7 +267,7 @@ test(resource_object, true(O == IRI)) :-
     oro('Dudule', IRI).
 test(quoted_object_with_spaces, true(O == L)) :-
     obj("\"Ramses the robot\"", O),
-    lit(xsd:string, 'Ramses the robot', L).
+    test_literal(xsd:string, 'Ramses the robot', L).
 test(variable_object, true(T = rdf(_, _, var(x)))) :-
     oro_parse_statement("johnny likes ?x", T).
 test(variable_subject, true(T = rdf(var(who), _, _))) :-
@@ -304,7 +295,7 @@ test(batch, true(Ts == [rdf(A, P1, B), rdf(var(x), P1, C)])) :-
     oro(a, A),
     oro(p, P1),
     oro(b, B),
-    lit(xsd:string, c, C).
+    test_literal(xsd:string, c, C).
 test(empty_batch, true(Ts == [])) :-
     oro_parse_statements([], Ts).
 
@@ -340,32 +331,32 @@ valid("Dudule^^xsd:string",        xsd:string,  'Dudule').
 
 test(spec_valid, forall(valid(Text, Type, Lex)), true(O == L)) :-
     obj(Text, O),
-    lit(Type, Lex, L).
+    test_literal(Type, Lex, L).
 
 test(true_not_resource, true(O == L)) :-
     obj("true", O),
-    lit(xsd:boolean, true, L).
+    test_literal(xsd:boolean, true, L).
 test(true_case_sensitive, true(O == IRI)) :-
     obj("True", O),
     oro('True', IRI).
 test(negative_int, true(O == L)) :-
     obj("-3", O),
-    lit(xsd:int, '-3', L).
+    test_literal(xsd:int, '-3', L).
 test(signed_int_kept, true(O == L)) :-
     obj("+007", O),
-    lit(xsd:int, '+007', L).
+    test_literal(xsd:int, '+007', L).
 test(double, true(O == L)) :-
     obj("48.5", O),
-    lit(xsd:double, '48.5', L).
+    test_literal(xsd:double, '48.5', L).
 test(double_exponent, true(O == L)) :-
     obj("-3.0e2", O),
-    lit(xsd:double, '-3.0e2', L).
+    test_literal(xsd:double, '-3.0e2', L).
 test(double_leading_dot, true(O == L)) :-
     obj(".5", O),
-    lit(xsd:double, '.5', L).
+    test_literal(xsd:double, '.5', L).
 test(exponent_without_dot_is_double, true(O == L)) :-
     obj("1e5", O),
-    lit(xsd:double, '1e5', L).
+    test_literal(xsd:double, '1e5', L).
 test(nan_is_resource, true(O == IRI)) :-
     obj("NaN", O),
     oro('NaN', IRI).
@@ -374,22 +365,22 @@ test(java_suffix_is_resource, true(O == IRI)) :-
     oro('1d', IRI).
 test(single_quoted_escape, true(O == L)) :-
     obj("'it\\'s'", O),
-    lit(xsd:string, 'it\'s', L).
+    test_literal(xsd:string, 'it\'s', L).
 test(empty_string, true(O == L)) :-
     obj("\"\"", O),
-    lit(xsd:string, '', L).
+    test_literal(xsd:string, '', L).
 test(separator_inside_quotes, true(O == L)) :-
     obj("\"a^^b\"", O),
-    lit(xsd:string, 'a^^b', L).
+    test_literal(xsd:string, 'a^^b', L).
 test(last_separator, true(O == L)) :-
     obj("\"a^^b\"^^xsd:string", O),
-    lit(xsd:string, 'a^^b', L).
+    test_literal(xsd:string, 'a^^b', L).
 test(apostrophe_in_typed, true(O == L)) :-
     obj("\"it's\"^^xsd:string", O),
-    lit(xsd:string, 'it\'s', L).
+    test_literal(xsd:string, 'it\'s', L).
 test(angle_prefixed_type, true(O == L)) :-
     obj("150^^<xsd:int>", O),
-    lit(xsd:int, '150', L).
+    test_literal(xsd:int, '150', L).
 test(non_xsd_type_kept, true(O == literal(type('http://x.org/t#celsius', '21')))) :-
     obj("21^^<http://x.org/t#celsius>", O).
 test(oro_type_expanded, true(O == literal(type(T, '21')))) :-
@@ -397,31 +388,31 @@ test(oro_type_expanded, true(O == literal(type(T, '21')))) :-
     oro(celsius, T).
 test(long, true(O == L)) :-
     obj("9000000000^^xsd:long", O),
-    lit(xsd:long, '9000000000', L).
+    test_literal(xsd:long, '9000000000', L).
 test(non_negative, true(O == L)) :-
     obj("0^^xsd:nonNegativeInteger", O),
-    lit(xsd:nonNegativeInteger, '0', L).
+    test_literal(xsd:nonNegativeInteger, '0', L).
 test(decimal, true(O == L)) :-
     obj("-1.50^^xsd:decimal", O),
-    lit(xsd:decimal, '-1.50', L).
+    test_literal(xsd:decimal, '-1.50', L).
 test(double_inf, true(O == L)) :-
     obj("INF^^xsd:double", O),
-    lit(xsd:double, 'INF', L).
+    test_literal(xsd:double, 'INF', L).
 test(boolean_zero, true(O == L)) :-
     obj("0^^xsd:boolean", O),
-    lit(xsd:boolean, '0', L).
+    test_literal(xsd:boolean, '0', L).
 test(date_time, true(O == L)) :-
     obj("2014-03-01T10:20:30.5+01:00^^xsd:dateTime", O),
-    lit(xsd:dateTime, '2014-03-01T10:20:30.5+01:00', L).
+    test_literal(xsd:dateTime, '2014-03-01T10:20:30.5+01:00', L).
 test(date, true(O == L)) :-
     obj("\"2014-03-01\"^^xsd:date", O),
-    lit(xsd:date, '2014-03-01', L).
+    test_literal(xsd:date, '2014-03-01', L).
 test(duration, true(O == L)) :-
     obj("P1DT2H^^xsd:duration", O),
-    lit(xsd:duration, 'P1DT2H', L).
+    test_literal(xsd:duration, 'P1DT2H', L).
 test(any_uri, true(O == L)) :-
     obj("'http://x.org'^^xsd:anyURI", O),
-    lit(xsd:anyURI, 'http://x.org', L).
+    test_literal(xsd:anyURI, 'http://x.org', L).
 test(lang_double_quoted, true(O == literal(lang(fr, chat)))) :-
     obj("\"chat\"@fr", O).
 test(lang_single_quoted, true(O == literal(lang('en-GB', 'big cat')))) :-

@@ -1,19 +1,12 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
-:- use_module(library(error)).
 :- use_module(library(filesex)).
 :- use_module(library(readutil)).
 :- use_module(library(settings)).
 :- use_module(library(aggregate)).
-:- use_module(library(http/json)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  End-to-end tests of the ORO server over real sockets on 127.0.0.1:
     the test vectors of ORO-SPEC §13 (framing and dispatch §13.1, check
@@ -32,140 +25,36 @@
 */
 
 :- dynamic
-    srv_test_dir/1,                     % Dir
-    srv_server/1,                       % Server
     srv_save_dir/1,                     % Dir
     srv_replay_conn/2.                  % Thread, Conn
-
-:- prolog_load_context(directory, Dir),
-   retractall(srv_test_dir(_)),
-   assertz(srv_test_dir(Dir)).
-
 
                  /*******************************
                  *     SERVER AND CONNECTIONS   *
                  *******************************/
 
-%   srv_start(+Options): start the unit's server on a free port of
-%   127.0.0.1 (stopping a leftover one first).
+%   srv_start(+Options), srv_stop: the unit's server
+%   (test_server_start/1, test_server_stop/0).
 
 srv_start(Options) :-
-    srv_stop,
-    oro_server_start([port(0), host('127.0.0.1')|Options], Server),
-    assertz(srv_server(Server)).
+    test_server_start(Options).
 
 srv_stop :-
-    forall(retract(srv_server(Server)),
-           ( srv_wait_connections(Server),
-             oro_server_stop(Server)
-           )).
-
-%   srv_wait_connections(+Server): wait (10 s at most) until the
-%   server's workers have seen their clients leave, so that no worker
-%   is still running when the process halts.  Peeks at the server's
-%   pool through its handle.
-
-srv_wait_connections(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  (   srv_wait_until(srv_pool_idle(Pool), 10)
-        ->  true
-        ;   true
-        )
-    ;   true
-    ).
-
-srv_pool_idle(Pool) :-
-    catch(thread_pool_property(Pool, running(0)), _, true).
-
-%   srv_wait_until(:Condition, +Seconds) is semidet: poll Condition
-%   every 10 ms until it holds or Seconds have passed.
-
-:- meta_predicate srv_wait_until(0, +).
-
-srv_wait_until(Condition, Seconds) :-
-    get_time(Now),
-    Deadline is Now + Seconds,
-    srv_wait_until_(Condition, Deadline).
-
-srv_wait_until_(Condition, Deadline) :-
-    (   call(Condition)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.01),
-        srv_wait_until_(Condition, Deadline)
-    ;   fail
-    ).
-
-srv_fixture(File, Path) :-
-    srv_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
+    test_server_stop.
 
 %   The test configuration of ORO-SPEC §13: the test ontology alone.
 
 srv_start_testsuite :-
-    srv_fixture('testsuite.ttl', File),
-    srv_start([commonsense(false), ontology(File)]).
+    test_server_start_testsuite.
 
 %   The bundled common-sense ontology (the seed session).
 
 srv_start_commonsense :-
-    srv_start([commonsense(true)]).
-
-srv_port(Port) :-
-    srv_server(Server),
-    !,
-    oro_server_port(Server, Port).
-
-%   srv_connected(-Conn, :Goal): run Goal once on a new connection,
-%   closed afterwards whatever happens.
-
-:- meta_predicate srv_connected(-, 0).
-
-srv_connected(Conn, Goal) :-
-    srv_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, Conn),
-        once(Goal),
-        oro_disconnect(Conn)).
-
-%   srv_call(+Method, +Params, -Reply): one request on its own
-%   connection.
-
-srv_call(Method, Params, Reply) :-
-    srv_connected(Conn, oro_call(Conn, Method, Params, Reply)).
-
-%   srv_calls(+Requests, -Replies): Method-Params requests in order on
-%   one connection.
-
-srv_calls(Requests, Replies) :-
-    srv_connected(Conn, maplist(srv_request(Conn), Requests, Replies)).
-
-srv_request(Conn, Method-Params, Reply) :-
-    oro_call(Conn, Method, Params, Reply).
+    test_server_start([commonsense(true)]).
 
 %   srv_fresh: back to the state the server started in.
 
 srv_fresh :-
-    srv_ok(reset, []).
-
-%   srv_ok(+Method, +Params): a request that must succeed.
-
-srv_ok(Method, Params) :-
-    srv_call(Method, Params, Reply),
-    srv_expect_ok(Method, Reply, _).
-
-srv_expect_ok(_, ok(Value), Value) :-
-    !.
-srv_expect_ok(Method, Reply, _) :-
-    throw(srv_unexpected_reply(Method, Reply)).
-
-%   srv_receive_n(+Conn, +N, -Messages): the next N messages.
-
-srv_receive_n(Conn, N, Messages) :-
-    length(Messages, N),
-    maplist(oro_receive(Conn), Messages).
+    test_ok(reset, []).
 
 %   srv_reply_kind(+Reply, -Kind): ok, error or what else came.
 
@@ -173,65 +62,13 @@ srv_reply_kind(ok(_), ok) :- !.
 srv_reply_kind(error(_, _), error) :- !.
 srv_reply_kind(Other, Other).
 
-%   srv_error_name(+Reply, -Name): the exception name of an error
-%   reply, else the reply itself.
-
-srv_error_name(Reply, Name) :-
-    (   Reply = error(Name0, _)
-    ->  Name = Name0
-    ;   Name = Reply
-    ).
-
 
                  /*******************************
                  *        READING VALUES        *
                  *******************************/
 
-%   srv_json(+Line, -Value): the value line parsed as JSON.  Strings
-%   are strings, lists lists, and objects sorted lists of Key-Value
-%   pairs with string keys.
-
-srv_json(Line, Value) :-
-    setup_call_cleanup(
-        open_string(Line, In),
-        json_read_dict(In, Dict, [value_string_as(string)]),
-        close(In)),
-    srv_json_value(Dict, Value).
-
-srv_json_value(Dict, Pairs) :-
-    is_dict(Dict),
-    !,
-    dict_pairs(Dict, _, Pairs0),
-    maplist(srv_json_pair, Pairs0, Pairs1),
-    msort(Pairs1, Pairs).
-srv_json_value(List0, List) :-
-    is_list(List0),
-    !,
-    maplist(srv_json_value, List0, List).
-srv_json_value(Value, Value).
-
-srv_json_pair(Key0-Value0, Key-Value) :-
-    atom_string(Key0, Key),
-    srv_json_value(Value0, Value).
-
-%   srv_set(+Reply, -Set): an ok(List) reply as a sorted list (the
-%   order of ORO lists carries no meaning).
-
-srv_set(Reply, Set) :-
-    srv_expect_ok(set, Reply, Line),
-    srv_json(Line, List),
-    must_be(list, List),
-    msort(List, Set).
-
-%   srv_map(+Reply, -Pairs): an ok(Map) reply as sorted Key-Value pairs.
-
-srv_map(Reply, Pairs) :-
-    srv_expect_ok(map, Reply, Line),
-    srv_json(Line, Pairs),
-    must_be(list(pair), Pairs).
-
 srv_keys(Reply, Keys) :-
-    srv_map(Reply, Pairs),
+    test_map(Reply, Pairs),
     pairs_keys(Pairs, Keys).
 
 %   Small tests on values, for include/3, exclude/3 and maplist/3.
@@ -268,13 +105,9 @@ srv_snapshot_file(File) :-
 
 srv_unparsed(bad(_)).
 
-srv_set_call(Method, Params, Set) :-
-    srv_call(Method, Params, Reply),
-    srv_set(Reply, Set).
-
 srv_map_call(Method, Params, Pairs) :-
-    srv_call(Method, Params, Reply),
-    srv_map(Reply, Pairs).
+    test_call(Method, Params, Reply),
+    test_map(Reply, Pairs).
 
 
                  /*******************************
@@ -287,12 +120,12 @@ srv_map_call(Method, Params, Pairs) :-
                ]).
 
 test(hello, true(Reply == ok("\"oro-server 0.8.2\""))) :-
-    srv_call(hello, [], Reply).
+    test_call(hello, [], Reply).
 test(stats_keys, true(Keys == [ "host", "nb_classes", "nb_clients",
                                 "nb_instances", "pending_requests",
                                 "uptime", "version"
                               ])) :-
-    srv_call(stats, [], Reply),
+    test_call(stats, [], Reply),
     srv_keys(Reply, Keys).
 test(stats_values_are_strings, true(NotStrings == [])) :-
     srv_map_call(stats, [], Pairs),
@@ -311,11 +144,11 @@ test(stats_uptime_format, true(Shape == "99:99:99")) :-
     maplist(srv_digit_shape, Codes, Shape0),
     string_codes(Shape, Shape0).
 test(simple_methods_format, true(Malformed == [])) :-
-    srv_set_call(listSimpleMethods, [], Signatures),
+    test_set_call(listSimpleMethods, [], Signatures),
     exclude(srv_signature, Signatures, Malformed).
 test(simple_methods_core,
      true(Missing == [])) :-
-    srv_set_call(listSimpleMethods, [], Signatures),
+    test_set_call(listSimpleMethods, [], Signatures),
     subtract(["add(Set)", "find(String, Set)", "check(Set)", "hello()",
               "stats()", "listSimpleMethods()", "reset()", "clear()",
               "clear(Set)", "lookup(String)", "getLabel(String)"],
@@ -325,32 +158,32 @@ test(unimplemented_not_listed, true(Bad == [])) :-
     % only if the dispatcher knows it: probed with 7 parameters (no
     % method has 7), a listed one is an arity error, an unlisted one
     % "not implemented".
-    srv_set_call(listSimpleMethods, [], Signatures),
+    test_set_call(listSimpleMethods, [], Signatures),
     maplist(srv_signature_name, Signatures, Listed),
     findall(Name, srv_spec_method(Name), Names),
     length(Params, 7),
     maplist(=(x), Params),
-    srv_connected(Conn,
-                  foldl(srv_listing_probe(Conn, Params, Listed), Names,
-                        Bad, [])).
+    test_connected(Conn,
+                   foldl(srv_listing_probe(Conn, Params, Listed), Names,
+                         Bad, [])).
 test(listed_methods_are_dispatched, true(Bad == [])) :-
     % Every listed method exists for the dispatcher: with 7 parameters
     % (no method has 7) it is an arity error, never "not implemented".
     % (Not help: a help line is answered at once, ORO-SPEC §1.2.)
-    srv_set_call(listSimpleMethods, [], Signatures),
+    test_set_call(listSimpleMethods, [], Signatures),
     maplist(srv_signature_name, Signatures, Names0),
     sort(Names0, Names1),
     subtract(Names1, ["help"], Names),
     length(Params, 7),
     maplist(=(x), Params),
-    srv_connected(Conn,
-                  foldl(srv_arity_probe(Conn, Params), Names, Bad, [])).
+    test_connected(Conn,
+                   foldl(srv_arity_probe(Conn, Params), Names, Bad, [])).
 test(methods_alias, true(Methods == Simple)) :-
-    srv_set_call(listSimpleMethods, [], Simple),
-    srv_set_call(methods, [], Methods).
+    test_set_call(listSimpleMethods, [], Simple),
+    test_set_call(methods, [], Methods).
 test(list_methods_keys, true(Keys == Simple)) :-
-    srv_set_call(listSimpleMethods, [], Simple),
-    srv_call(listMethods, [], Reply),
+    test_set_call(listSimpleMethods, [], Simple),
+    test_call(listMethods, [], Reply),
     srv_keys(Reply, Keys).
 test(list_methods_descriptions, true(Bad == [])) :-
     srv_map_call(listMethods, [], Pairs),
@@ -358,123 +191,123 @@ test(list_methods_descriptions, true(Bad == [])) :-
 test(unknown_method,
      true(Reply == error("NotImplementedException",
                          "Method \"foo\" not implemented."))) :-
-    srv_call(foo, [], Reply).
+    test_call(foo, [], Reply).
 test(method_with_trailing_space,
      true(Reply == error("NotImplementedException",
                          "Method \"add \" not implemented."))) :-
-    srv_call('add ', ['[a b c]'], Reply).
+    test_call('add ', ['[a b c]'], Reply).
 test(wrong_arity,
      true(Reply == error("NotImplementedException",
                          "Error while executing the request: wrong number of \c
                           parameters provided for method \"add\" (0 were \c
                           provided)."))) :-
-    srv_call(add, [], Reply).
+    test_call(add, [], Reply).
 test(embedded_empty_line_is_a_parameter,
      true(Reply == ok("[]"))) :-
     % three parameters: find(x, [], [?x rdf:type Animal]) -- an empty
     % pattern set answers [] whatever the filters (ORO-SPEC §6.3)
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "find\nx\n\n[?x rdf:type Animal]\n#end#\n"),
-                    oro_receive(Conn, Reply)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "find\nx\n\n[?x rdf:type Animal]\n#end#\n"),
+                     oro_receive(Conn, Reply)
+                   )).
 test(not_a_set,
      true(Reply == error("NotImplementedException",
                          "Error while executing the request: no method \c
                           prototype for 'add' match the given arguments."))) :-
-    srv_call(add, ['gorilla likes apple'], Reply).
+    test_call(add, ['gorilla likes apple'], Reply).
 test(null_set, true(Replies == [ok("true"), ok("true"), ok("[]")])) :-
     % ORO-SPEC §2.2: null (any case) is the empty set.
-    srv_calls([ check-[null],
-                check-['NULL'],
-                find-[x, 'Null']
-              ],
-              Replies).
+    test_calls([ check-[null],
+                 check-['NULL'],
+                 find-[x, 'Null']
+               ],
+               Replies).
 test(braces_are_not_a_set,
      true(Reply == error("NotImplementedException",
                          "Error while executing the request: no method \c
                           prototype for 'add' match the given arguments."))) :-
-    srv_call(add, ['{a b c}'], Reply).
+    test_call(add, ['{a b c}'], Reply).
 test(set_not_trimmed,
      true(Replies == [Prototype, Prototype])) :-
     Prototype = error("NotImplementedException",
                       "Error while executing the request: no method \c
                        prototype for 'check' match the given arguments."),
-    srv_calls([ check-[' [gorilla rdf:type Monkey]'],
-                check-['[gorilla rdf:type Monkey] ']
-              ],
-              Replies).
+    test_calls([ check-[' [gorilla rdf:type Monkey]'],
+                 check-['[gorilla rdf:type Monkey] ']
+               ],
+               Replies).
 test(string_quoting, true(Replies == [Label, Label, Label, Label])) :-
     % ORO-SPEC §2.1: trimmed, one pair of outer quotes removed.
     Label = ok("\"baboon monkey\""),
-    srv_calls([ getLabel-[baboon],
-                getLabel-['"baboon"'],
-                getLabel-['\'baboon\''],
-                getLabel-['  baboon  ']
-              ],
-              Replies).
+    test_calls([ getLabel-[baboon],
+                 getLabel-['"baboon"'],
+                 getLabel-['\'baboon\''],
+                 getLabel-['  baboon  ']
+               ],
+               Replies).
 test(bad_unicode_escape,
      true(Name-Start == "laas.openrobots.ontology.exceptions.OntologyServerException"-
                         "Unable to parse unicode value")) :-
-    srv_call(getLabel, ['\\uZZ'], error(Name, Message)),
+    test_call(getLabel, ['\\uZZ'], error(Name, Message)),
     sub_string(Message, 0, 29, _, Start).
 test(trailing_empty_lines_dropped,
      true(Messages == [ok("true"), error("NotImplementedException", Arity)])) :-
     % ORO-SPEC §1.2: trailing empty lines are not parameters.
     Arity = "Error while executing the request: wrong number of parameters \c
              provided for method \"check\" (0 were provided).",
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "check\n[gorilla rdf:type Monkey]\n\n\n#end#\n\c
-                                        check\n\n#end#\n"),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "check\n[gorilla rdf:type Monkey]\n\n\n#end#\n\c
+                                         check\n\n#end#\n"),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(case_insensitive, [setup(srv_fresh), true(Replies == [ok(""), ok("true")])]) :-
-    srv_calls([ 'ADD'-['[toto likes tata]'],
-                'cHeCk'-['[toto likes tata]']
-              ],
-              Replies).
+    test_calls([ 'ADD'-['[toto likes tata]'],
+                 'cHeCk'-['[toto likes tata]']
+               ],
+               Replies).
 test(two_tokens,
      true(Reply == error("laas.openrobots.ontology.exceptions.IllegalStatementException",
                          "Three tokens are expected in a statement, 2 found \c
                           in toto titi."))) :-
-    srv_call(add, ['[toto titi]'], Reply).
+    test_call(add, ['[toto titi]'], Reply).
 test(close, true(Messages == [closing, end_of_file])) :-
-    srv_connected(Conn,
-                  ( oro_send(Conn, close, []),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send(Conn, close, []),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(close_ignores_parameters, true(Messages == [closing, end_of_file])) :-
-    srv_connected(Conn,
-                  ( oro_send(Conn, 'CLOSE', [a, '[b]']),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send(Conn, 'CLOSE', [a, '[b]']),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(help_multiline, true(Kinds == [true, true, true, true])) :-
-    srv_call(help, [], ok(Text)),
+    test_call(help, [], ok(Text)),
     maplist(srv_contains(Text),
             ["\n", "add(Set)", "find(String, Set)", "listSimpleMethods()"],
             Kinds).
 test(help_quoted, true(Quotes == "\"\"")) :-
-    srv_call(help, [], ok(Text)),
+    test_call(help, [], ok(Text)),
     sub_string(Text, 0, 1, _, First),
     sub_string(Text, _, 1, 0, Last),
     string_concat(First, Last, Quotes).
 test(help_end_answered_once, true(Replies == [help, Hello])) :-
     % pyoro's help() sends help\n#end#\n: one answer, then in sync.
     Hello = ok("\"oro-server 0.8.2\""),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "help\n#end#\n"),
-                    oro_receive(Conn, Help),
-                    oro_call(Conn, hello, [], Reply2)
-                  )),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "help\n#end#\n"),
+                     oro_receive(Conn, Help),
+                     oro_call(Conn, hello, [], Reply2)
+                   )),
     srv_help_reply(Help, Reply1),
     Replies = [Reply1, Reply2].
 test(help_without_end, true(Replies == [help, Hello])) :-
     % A bare help line is answered at once (ORO-SPEC §1.2).
     Hello = ok("\"oro-server 0.8.2\""),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "help\n"),
-                    oro_receive(Conn, Help),
-                    oro_call(Conn, hello, [], Reply2)
-                  )),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "help\n"),
+                     oro_receive(Conn, Help),
+                     oro_call(Conn, hello, [], Reply2)
+                   )),
     srv_help_reply(Help, Reply1),
     Replies = [Reply1, Reply2].
 test(pipelined, [ setup(srv_fresh),
@@ -484,52 +317,52 @@ test(pipelined, [ setup(srv_fresh),
                                      ok("false")
                                    ])
                 ]) :-
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "hello\n#end#\nADD\n[pa pb pc]\n#end#\n\c
-                                        check\n[pa pb pc]\n#end#\n\c
-                                        check\n[pc pb pa]\n#end#\n"),
-                    srv_receive_n(Conn, 4, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "hello\n#end#\nADD\n[pa pb pc]\n#end#\n\c
+                                         check\n[pa pb pc]\n#end#\n\c
+                                         check\n[pc pb pa]\n#end#\n"),
+                     test_receive_n(Conn, 4, Messages)
+                   )).
 test(pipelined_without_newlines, true(Messages == [Hello, Hello, Hello])) :-
     Hello = ok("\"oro-server 0.8.2\""),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "hello\n#end#hello\n#end#\n\nhello\n#end#"),
-                    srv_receive_n(Conn, 3, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "hello\n#end#hello\n#end#\n\nhello\n#end#"),
+                     test_receive_n(Conn, 3, Messages)
+                   )).
 test(crlf, true(Messages == [ok("true"), ok("false")])) :-
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "check\r\n[gorilla rdf:type Monkey]\r\n#end#\r\n\c
-                                        check\r[gorilla rdf:type Plant]\r#end#\r\n"),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "check\r\n[gorilla rdf:type Monkey]\r\n#end#\r\n\c
+                                         check\r[gorilla rdf:type Plant]\r#end#\r\n"),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(end_on_parameter_line, true(Messages == [ok("true"), ok("false")])) :-
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "check\n[gorilla rdf:type Monkey]#end#\n\c
-                                        check\n[gorilla rdf:type Plant]#end#"),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "check\n[gorilla rdf:type Monkey]#end#\n\c
+                                         check\n[gorilla rdf:type Plant]#end#"),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(bare_end,
      true(Messages == [ error("NotImplementedException",
                               "Method \"\" not implemented."),
                         ok("\"oro-server 0.8.2\"")
                       ])) :-
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "#end#\nhello\n#end#\n"),
-                    srv_receive_n(Conn, 2, Messages)
-                  )).
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "#end#\nhello\n#end#\n"),
+                     test_receive_n(Conn, 2, Messages)
+                   )).
 test(request_parser_vector, true(Checks == [true, true, true, true, true])) :-
     % ORO-SPEC §13.1, socketConnectorRequestParser: three writes that
     % must give help, addForAgent(TOTO, [...]), test2, help,
     % test3(param1).
-    srv_call(help, [], Help),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "help\naddForAgent\nTOTO\n\c
-                                        [\"TATA likes TOTO\"]\n#end#\ntest2\n"),
-                    srv_receive_n(Conn, 2, [M1, M2]),
-                    oro_send_raw(Conn, "#end#\nhelp\ntest3\nparam1\n#end"),
-                    oro_send_raw(Conn, "#\n"),
-                    srv_receive_n(Conn, 3, [M3, M4, M5])
-                  )),
+    test_call(help, [], Help),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "help\naddForAgent\nTOTO\n\c
+                                         [\"TATA likes TOTO\"]\n#end#\ntest2\n"),
+                     test_receive_n(Conn, 2, [M1, M2]),
+                     oro_send_raw(Conn, "#end#\nhelp\ntest3\nparam1\n#end"),
+                     oro_send_raw(Conn, "#\n"),
+                     test_receive_n(Conn, 3, [M3, M4, M5])
+                   )),
     Checks = [C1, C2, C3, C4, C5],
     srv_same(M1, Help, C1),
     (   (   M2 == error("NotImplementedException",
@@ -668,7 +501,7 @@ srv_check_vector('["gorilla rdf:type Monkey", \'baboon age 35\']', "true").
 test(check, [ forall(srv_check_vector(Set, Expected)),
               true(Reply == ok(Expected))
             ]) :-
-    srv_call(check, [Set], Reply).
+    test_call(check, [Set], Reply).
 
 :- end_tests(srv_check).
 
@@ -683,36 +516,36 @@ test(check, [ forall(srv_check_vector(Set, Expected)),
                ]).
 
 test(no_patterns, true(Reply == ok("[]"))) :-
-    srv_call(find, ['?mysterious', '[]'], Reply).
+    test_call(find, ['?mysterious', '[]'], Reply).
 test(empty_variable,
      true(Reply == error("laas.openrobots.ontology.exceptions.OntologyServerException",
                          "Calling the find() method with an empty variable."))) :-
-    srv_call(find, ['', '[?x rdf:type Animal]'], Reply).
+    test_call(find, ['', '[?x rdf:type Animal]'], Reply).
 test(monkeys, true(Xs == ["baboon", "gorilla"])) :-
-    srv_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, \c
-                                      ?mysterious oro:weight ?value]'], Xs).
+    test_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, \c
+                                       ?mysterious oro:weight ?value]'], Xs).
 test(question_mark_optional, true(Xs == ["baboon", "gorilla"])) :-
-    srv_set_call(find, ['?m', '[?m rdf:type Monkey]'], Xs).
+    test_set_call(find, ['?m', '[?m rdf:type Monkey]'], Xs).
 test(labels, true(Xs == ["baboon monkey", "babouin"])) :-
-    srv_set_call(find, [label, '[?mysterious rdf:type oro:Monkey, \c
-                                 ?mysterious oro:weight ?value, \c
-                                 baboon rdfs:label ?label]'], Xs).
+    test_set_call(find, [label, '[?mysterious rdf:type oro:Monkey, \c
+                                  ?mysterious oro:weight ?value, \c
+                                  baboon rdfs:label ?label]'], Xs).
 test(no_solution, true(Reply == ok("[]"))) :-
-    srv_call(find, ['?mysterious', '[?mysterious oro:eats oro:banana_tree, \c
-                                     ?mysterious oro:isFemale true^^xsd:boolean]'],
-             Reply).
+    test_call(find, ['?mysterious', '[?mysterious oro:eats oro:banana_tree, \c
+                                      ?mysterious oro:isFemale true^^xsd:boolean]'],
+              Reply).
 test(unknown_variable, true(Reply == ok("[]"))) :-
-    srv_call(find, [nowhere, '[?x rdf:type Monkey]'], Reply).
+    test_call(find, [nowhere, '[?x rdf:type Monkey]'], Reply).
 test(typed_boolean, [setup(srv_fresh), true(Xs == ["baboon", "fish"])]) :-
-    srv_ok(add, ['[oro:fish oro:isFemale "true"^^xsd:boolean]']),
-    srv_set_call(find, [i, '[?i rdf:type owl:Thing, ?i oro:isFemale true]'], Xs).
+    test_ok(add, ['[oro:fish oro:isFemale "true"^^xsd:boolean]']),
+    test_set_call(find, [i, '[?i rdf:type owl:Thing, ?i oro:isFemale true]'], Xs).
 test(domain_inference, [ setup(srv_fresh),
                          true(Xs == ["baboon", "cow", "gorilla", "sheep"])
                        ]) :-
-    srv_ok(add, ['[sheep eats grass]']),
-    srv_set_call(find, [animals, '[?animals rdf:type Animal]'], Xs).
+    test_ok(add, ['[sheep eats grass]']),
+    test_set_call(find, [animals, '[?animals rdf:type Animal]'], Xs).
 test(literal_values, true(Xs == ["12", "35"])) :-
-    srv_set_call(find, [a, '[?x rdf:type Monkey, ?x age ?a]'], Xs).
+    test_set_call(find, [a, '[?x rdf:type Monkey, ?x age ?a]'], Xs).
 
 :- end_tests(srv_find).
 
@@ -730,71 +563,71 @@ test(six_animals, [ setup(srv_fresh),
                     true(Xs == ["baboon", "cow", "fish", "gorilla", "horse",
                                 "sparrow"])
                   ]) :-
-    srv_ok(add, ['[oro:horse rdf:type oro:Animal]']),
-    srv_ok(add, ['[fish rdf:type Animal, sparrow rdf:type Bird, \c
-                  Bird rdfs:subClassOf Animal]']),
-    srv_set_call(find, [instances, '[?instances rdf:type oro:Animal]'], Xs).
+    test_ok(add, ['[oro:horse rdf:type oro:Animal]']),
+    test_ok(add, ['[fish rdf:type Animal, sparrow rdf:type Bird, \c
+                   Bird rdfs:subClassOf Animal]']),
+    test_set_call(find, [instances, '[?instances rdf:type oro:Animal]'], Xs).
 test(clear_add_clear, [ setup(srv_fresh),
                         true(Counts-Food == [5, 4, 5, 4]-[["butter", "seeds"], []])
                       ]) :-
     Animals = [instances, '[?instances rdf:type oro:Animal]'],
-    srv_ok(add, ['[fish rdf:type Animal, sparrow rdf:type Bird, \c
-                  Bird rdfs:subClassOf Animal]']),
-    srv_set_call(find, Animals, A1),
-    srv_ok(clear, ['[Bird rdfs:subClassOf Animal]']),
-    srv_set_call(find, Animals, A2),
-    srv_ok(add, ['[sparrow eats seeds, sparrow eats butter]']),
-    srv_set_call(find, Animals, A3),
-    srv_set_call(find, [food, '[oro:sparrow oro:eats ?food]'], F1),
-    srv_ok(clear, ['[sparrow eats ?food]']),
-    srv_set_call(find, [food, '[oro:sparrow oro:eats ?food]'], F2),
-    srv_set_call(find, Animals, A4),
+    test_ok(add, ['[fish rdf:type Animal, sparrow rdf:type Bird, \c
+                   Bird rdfs:subClassOf Animal]']),
+    test_set_call(find, Animals, A1),
+    test_ok(clear, ['[Bird rdfs:subClassOf Animal]']),
+    test_set_call(find, Animals, A2),
+    test_ok(add, ['[sparrow eats seeds, sparrow eats butter]']),
+    test_set_call(find, Animals, A3),
+    test_set_call(find, [food, '[oro:sparrow oro:eats ?food]'], F1),
+    test_ok(clear, ['[sparrow eats ?food]']),
+    test_set_call(find, [food, '[oro:sparrow oro:eats ?food]'], F2),
+    test_set_call(find, Animals, A4),
     maplist(length, [A1, A2, A3, A4], Counts),
     Food = [F1, F2].
 test(clear_restores, [ setup(srv_fresh),
                        true(After-During == Before-true)
                      ]) :-
     Set = '[gorilla rdfs:label \'KingKong\', gorilla rdfs:comment "KingKong is nice"]',
-    srv_set_call(getInfos, [gorilla], Before),
-    srv_ok(add, [Set]),
-    srv_set_call(getInfos, [gorilla], Added),
+    test_set_call(getInfos, [gorilla], Before),
+    test_ok(add, [Set]),
+    test_set_call(getInfos, [gorilla], Added),
     (   memberchk("gorilla label KingKong", Added),
         memberchk("gorilla comment KingKong is nice", Added)
     ->  During = true
     ;   During = Added
     ),
-    srv_ok(clear, [Set]),
-    srv_set_call(getInfos, [gorilla], After).
+    test_ok(clear, [Set]),
+    test_set_call(getInfos, [gorilla], After).
 test(clear_wildcard, [ setup(srv_fresh),
                        true(Replies == [ok(""), ok(""), ok("false"), ok("false"),
                                         ok("false"), ok("true")])
                      ]) :-
     % `S ?a ?b` removes everything asserted about S, the ontology's
     % facts included (ORO-SPEC §6.1).
-    srv_calls([ add-['[kong rdf:type Monkey, kong age 3]'],
-                clear-['[kong ?a ?b, gorilla ?a ?b]'],
-                check-['[kong rdf:type Monkey]'],
-                check-['[kong age 3]'],
-                check-['[gorilla rdf:type Monkey]'],
-                check-['[baboon rdf:type Monkey]']
-              ],
-              Replies).
+    test_calls([ add-['[kong rdf:type Monkey, kong age 3]'],
+                 clear-['[kong ?a ?b, gorilla ?a ?b]'],
+                 check-['[kong rdf:type Monkey]'],
+                 check-['[kong age 3]'],
+                 check-['[gorilla rdf:type Monkey]'],
+                 check-['[baboon rdf:type Monkey]']
+               ],
+               Replies).
 test(add_twice_is_idempotent, [ setup(srv_fresh),
                                 true(Second == First)
                               ]) :-
-    srv_ok(add, ['[horse rdf:type Animal, horse age 7]']),
-    srv_set_call(getInfos, [horse], First),
-    srv_ok(add, ['[horse rdf:type Animal, horse age 7]']),
-    srv_set_call(getInfos, [horse], Second).
+    test_ok(add, ['[horse rdf:type Animal, horse age 7]']),
+    test_set_call(getInfos, [horse], First),
+    test_ok(add, ['[horse rdf:type Animal, horse age 7]']),
+    test_set_call(getInfos, [horse], Second).
 test(remove, [ setup(srv_fresh),
                true(Replies == [ok(""), ok("true"), ok(""), ok("false")])
              ]) :-
-    srv_calls([ add-['[horse rdf:type Animal]'],
-                check-['[horse rdf:type Animal]'],
-                remove-['[horse rdf:type Animal]'],
-                check-['[horse rdf:type Animal]']
-              ],
-              Replies).
+    test_calls([ add-['[horse rdf:type Animal]'],
+                 check-['[horse rdf:type Animal]'],
+                 remove-['[horse rdf:type Animal]'],
+                 check-['[horse rdf:type Animal]']
+               ],
+               Replies).
 
 :- end_tests(srv_counts).
 
@@ -810,7 +643,7 @@ test(remove, [ setup(srv_fresh),
 
 srv_lookup_setup :-
     srv_fresh,
-    srv_ok(add, ['[gorilla rdfs:label "king kong", iddebile rdf:type Human]']).
+    test_ok(add, ['[gorilla rdfs:label "king kong", iddebile rdf:type Human]']).
 
 srv_lookup_vector('princess Daisy', "[]").
 srv_lookup_vector('BabouIn', "[[\"baboon\",\"INSTANCE\"]]").
@@ -823,25 +656,25 @@ test(lookup, [ setup(srv_lookup_setup),
                forall(srv_lookup_vector(Text, Expected)),
                true(Reply == ok(Expected))
              ]) :-
-    srv_call(lookup, [Text], Reply).
+    test_call(lookup, [Text], Reply).
 test(two_hits, [ setup(srv_lookup_setup),
                  true(Pairs == [["KingKong", "CLASS"], ["gorilla", "INSTANCE"]])
                ]) :-
-    srv_ok(add, ['[KingKong rdfs:subClassOf Monkey, KingKong rdfs:label "king kong"]']),
-    srv_set_call(lookup, ['king kong'], Pairs).
+    test_ok(add, ['[KingKong rdfs:subClassOf Monkey, KingKong rdfs:label "king kong"]']),
+    test_set_call(lookup, ['king kong'], Pairs).
 test(cleared, [ setup(srv_lookup_setup),
                 true(Reply == ok("[]"))
               ]) :-
     Set = '[KingKong rdfs:subClassOf Monkey, KingKong rdfs:label "king kong"]',
-    srv_ok(add, [Set]),
-    srv_ok(clear, [Set]),
-    srv_ok(clear, ['[gorilla ?a ?b]']),
-    srv_call(lookup, ['king kong'], Reply).
+    test_ok(add, [Set]),
+    test_ok(clear, [Set]),
+    test_ok(clear, ['[gorilla ?a ?b]']),
+    test_call(lookup, ['king kong'], Reply).
 
 srv_kind_setup :-
     srv_fresh,
-    srv_ok(add, ['[rintintin rdf:type Dog, lassie rdf:type Cat, \c
-                  rintintin sees lassie, rintintin hasAge 134]']).
+    test_ok(add, ['[rintintin rdf:type Dog, lassie rdf:type Cat, \c
+                   rintintin sees lassie, rintintin hasAge 134]']).
 
 srv_kind_vector(rintintin, instance, "[\"rintintin\"]").
 srv_kind_vector(rintintin, class, "[]").
@@ -857,7 +690,7 @@ test(lookup_kind, [ setup(srv_kind_setup),
                     forall(srv_kind_vector(Text, Kind, Expected)),
                     true(Reply == ok(Expected))
                   ]) :-
-    srv_call(lookup, [Text, Kind], Reply).
+    test_call(lookup, [Text, Kind], Reply).
 
 :- end_tests(srv_lookup).
 
@@ -873,7 +706,7 @@ test(lookup_kind, [ setup(srv_kind_setup),
 
 srv_insects :-
     srv_fresh,
-    srv_ok(add, ['[Insect rdfs:subClassOf Animal, Ladybird rdfs:subClassOf Insect]']).
+    test_ok(add, ['[Insect rdfs:subClassOf Animal, Ladybird rdfs:subClassOf Insect]']).
 
 test(subclasses, [ setup(srv_insects),
                    true(Pairs == [ "Insect"-"Insect", "Ladybird"-"Ladybird",
@@ -884,19 +717,19 @@ test(subclasses, [ setup(srv_insects),
 test(direct_subclasses, [ setup(srv_insects),
                           true(Keys == ["Insect", "Monkey", "MyAnimals"])
                         ]) :-
-    srv_call(getDirectSubclassesOf, ['Animal'], Reply),
+    test_call(getDirectSubclassesOf, ['Animal'], Reply),
     srv_keys(Reply, Keys).
 test(superclasses, [ setup(srv_insects),
                      true(Keys == ["Animal", "Insect", "owl:Thing"])
                    ]) :-
     % rdfs:Resource may or may not be there (ORO-SPEC §6.4).
-    srv_call(getSuperclassesOf, ['Ladybird'], Reply),
+    test_call(getSuperclassesOf, ['Ladybird'], Reply),
     srv_keys(Reply, Keys0),
     subtract(Keys0, ["rdfs:Resource"], Keys).
 test(direct_superclasses, [ setup(srv_insects),
                             true(Reply == ok("{\"Insect\":\"Insect\"}"))
                           ]) :-
-    srv_call(getDirectSuperclassesOf, ['Ladybird'], Reply).
+    test_call(getDirectSuperclassesOf, ['Ladybird'], Reply).
 test(instances, [ setup(srv_insects),
                   true(Pairs == [ "baboon"-"baboon monkey", "cow"-"cow",
                                   "gorilla"-"gorilla"
@@ -906,7 +739,7 @@ test(instances, [ setup(srv_insects),
 test(direct_instances, [ setup(srv_insects),
                          true(Keys == ["apple", "banana_tree", "grass"])
                        ]) :-
-    srv_call(getDirectInstancesOf, ['Plant'], Reply),
+    test_call(getDirectInstancesOf, ['Plant'], Reply),
     srv_keys(Reply, Keys).
 test(direct_classes, [ setup(srv_insects),
                        true(Pairs == ["Monkey"-"Monkey", "MyAnimals"-"MyAnimals"])
@@ -915,28 +748,28 @@ test(direct_classes, [ setup(srv_insects),
 test(classes, [ setup(srv_insects),
                 true(Missing == [])
               ]) :-
-    srv_call(getClassesOf, [baboon], Reply),
+    test_call(getClassesOf, [baboon], Reply),
     srv_keys(Reply, Keys),
     subtract(["Animal", "Monkey", "MyAnimals"], Keys, Missing).
 test(lattice, [ setup(srv_insects),
                 true(Keys == ["B", "C", "D", "E", "F", "I", "J", "K"])
               ]) :-
-    srv_call(getSubclassesOf, ['A'], Reply),
+    test_call(getSubclassesOf, ['A'], Reply),
     srv_keys(Reply, Keys).
 test(not_a_class,
      true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
                          "The class baboon does not exists in the ontology \c
                           (tip: if this resource is not in the default \c
                           namespace, be sure to add the namespace prefix!)"))) :-
-    srv_call(getDirectSuperclassesOf, [baboon], Reply).
+    test_call(getDirectSuperclassesOf, [baboon], Reply).
 test(not_an_individual,
      true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
                          "Monkey is not an individual!"))) :-
-    srv_call(getClassesOf, ['Monkey'], Reply).
+    test_call(getClassesOf, ['Monkey'], Reply).
 test(classes_of_owl_class, true(Reply == ok("{}"))) :-
-    srv_call(getClassesOf, ['owl:Class'], Reply).
+    test_call(getClassesOf, ['owl:Class'], Reply).
 test(instances_of_individual, true(Name == "com.hp.hpl.jena.shared.NotFoundException")) :-
-    srv_call(getInstancesOf, [baboon], error(Name, _)).
+    test_call(getInstancesOf, [baboon], error(Name, _)).
 
 :- end_tests(srv_taxonomy).
 
@@ -951,34 +784,34 @@ test(instances_of_individual, true(Name == "com.hp.hpl.jena.shared.NotFoundExcep
                ]).
 
 test(get_infos, true(Missing == [])) :-
-    srv_set_call(getInfos, [baboon], Infos),
+    test_set_call(getInfos, [baboon], Infos),
     subtract([ "baboon type Animal", "baboon isFemale true",
                "baboon type Monkey", "baboon climbsOn banana_tree",
                "baboon age 35"
              ], Infos, Missing).
 test(get_infos_subject_only, true(Others == [])) :-
-    srv_set_call(getInfos, [baboon], Infos),
+    test_set_call(getInfos, [baboon], Infos),
     exclude(srv_about_baboon, Infos, Others).
 test(get_infos_prefixed, true(Prefixed == Plain)) :-
-    srv_set_call(getInfos, [baboon], Plain),
-    srv_set_call(getInfos, ['oro:baboon'], Prefixed).
+    test_set_call(getInfos, [baboon], Plain),
+    test_set_call(getInfos, ['oro:baboon'], Prefixed).
 test(about_alias, true(About == Infos)) :-
-    srv_set_call(getInfos, [baboon], Infos),
-    srv_set_call(about, [baboon], About).
+    test_set_call(getInfos, [baboon], Infos),
+    test_set_call(about, [baboon], About).
 test(get_infos_unknown,
      true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
                          "The node http://kb.openrobots.org#i_d_ont_exist was \c
                           not found in the ontology (tip: check the \c
                           namespaces!)."))) :-
-    srv_call(getInfos, [i_d_ont_exist], Reply).
+    test_call(getInfos, [i_d_ont_exist], Reply).
 test(label, true(Reply == ok("\"baboon monkey\""))) :-
-    srv_call(getLabel, [baboon], Reply).
+    test_call(getLabel, [baboon], Reply).
 test(label_is_name, true(Reply == ok("\"gorilla\""))) :-
-    srv_call(getLabel, [gorilla], Reply).
+    test_call(getLabel, [gorilla], Reply).
 test(label_unknown, true(Name == "com.hp.hpl.jena.shared.NotFoundException")) :-
-    srv_call(getLabel, [i_d_ont_exist], error(Name, _)).
+    test_call(getLabel, [i_d_ont_exist], error(Name, _)).
 test(details_monkey, true(Details == Expected)) :-
-    srv_call(getResourceDetails, ['Monkey'], Reply),
+    test_call(getResourceDetails, ['Monkey'], Reply),
     srv_details(Reply, Details),
     srv_details(ok("{\"name\":\"Monkey\",\"id\":\"Monkey\",\"type\":\"class\",\c
                     \"sameAs\":[],\"attributes\": [\c
@@ -996,10 +829,10 @@ test(details_layout, true(Start == Prefix)) :-
               \"id\":\"superClasses\",\"values\":[{\"name\":\"Animal\", \c
               \"id\":\"Animal\"}]},",
     string_length(Prefix, Length),
-    srv_call(getResourceDetails, ['Monkey'], ok(Line)),
+    test_call(getResourceDetails, ['Monkey'], ok(Line)),
     sub_string(Line, 0, Length, _, Start).
 test(details_instance, true(Type-Classes == "instance"-["Monkey", "MyAnimals"])) :-
-    srv_call(getResourceDetails, [baboon], Reply),
+    test_call(getResourceDetails, [baboon], Reply),
     srv_details(Reply, Details),
     memberchk("type"-Type, Details),
     memberchk("attributes"-Attributes, Details),
@@ -1009,7 +842,7 @@ test(details_instance, true(Type-Classes == "instance"-["Monkey", "MyAnimals"]))
     findall(Id, ( member(V, Values), memberchk("id"-Id, V) ), Classes1),
     msort(Classes1, Classes).
 test(details_unknown, true(Name == "com.hp.hpl.jena.shared.NotFoundException")) :-
-    srv_call(getResourceDetails, [i_d_ont_exist], error(Name, _)).
+    test_call(getResourceDetails, [i_d_ont_exist], error(Name, _)).
 
 :- end_tests(srv_infos).
 
@@ -1017,8 +850,8 @@ test(details_unknown, true(Name == "com.hp.hpl.jena.shared.NotFoundException")) 
 %   the order of `values` and `sameAs` lists ignored.
 
 srv_details(Reply, Details) :-
-    srv_expect_ok(getResourceDetails, Reply, Line),
-    srv_json(Line, Details0),
+    test_expect_ok(getResourceDetails, Reply, Line),
+    test_json(Line, Details0),
     srv_unordered(Details0, Details).
 
 srv_unordered(Pairs0, Pairs) :-
@@ -1048,7 +881,7 @@ srv_start_admin :-
     tmp_file(oro_save, Dir),
     make_directory(Dir),
     assertz(srv_save_dir(Dir)),
-    srv_fixture('testsuite.ttl', File),
+    test_fixture('testsuite.ttl', File),
     srv_start([commonsense(false), ontology(File), save_dir(Dir)]).
 
 srv_stop_admin :-
@@ -1062,35 +895,35 @@ srv_stop_admin :-
                ]).
 
 test(reset_forgets, true(Replies == [ok(""), ok("true"), ok(""), ok("false")])) :-
-    srv_calls([ add-['[horse rdf:type Animal]'],
-                check-['[horse rdf:type Animal]'],
-                reset-[],
-                check-['[horse rdf:type Animal]']
-              ],
-              Replies).
+    test_calls([ add-['[horse rdf:type Animal]'],
+                 check-['[horse rdf:type Animal]'],
+                 reset-[],
+                 check-['[horse rdf:type Animal]']
+               ],
+               Replies).
 test(clear_without_parameters_resets,
      true(Replies == [ok(""), ok(""), ok("false"), ok("true")])) :-
-    srv_calls([ add-['[horse rdf:type Animal]'],
-                clear-[],
-                check-['[horse rdf:type Animal]'],
-                check-['[gorilla rdf:type Monkey]']
-              ],
-              Replies).
+    test_calls([ add-['[horse rdf:type Animal]'],
+                 clear-[],
+                 check-['[horse rdf:type Animal]'],
+                 check-['[gorilla rdf:type Monkey]']
+               ],
+               Replies).
 test(reset_keeps_ontology, true(Reply == ok("true"))) :-
-    srv_ok(clear, ['[gorilla ?a ?b]']),
-    srv_ok(reset, []),
-    srv_call(check, ['[gorilla rdf:type Monkey, gorilla age 12]'], Reply).
+    test_ok(clear, ['[gorilla ?a ?b]']),
+    test_ok(reset, []),
+    test_call(check, ['[gorilla rdf:type Monkey, gorilla age 12]'], Reply).
 test(save, [ setup(srv_fresh),
              true(Contains == [true, true])
            ]) :-
-    srv_ok(add, ['[horse rdf:type Animal]']),
-    srv_ok(save, ['saved.owl']),
+    test_ok(add, ['[horse rdf:type Animal]']),
+    test_ok(save, ['saved.owl']),
     srv_save_dir(Dir),
     directory_file_path(Dir, 'saved.owl', File),
     read_file_to_string(File, Text, []),
     maplist(srv_contains(Text), ["horse", "gorilla"], Contains).
 test(save_snapshot, true(Snapshots = [_])) :-
-    srv_ok(save, []),
+    test_ok(save, []),
     srv_save_dir(Dir),
     directory_files(Dir, Entries),
     include(srv_snapshot_file, Entries, Snapshots).
@@ -1098,10 +931,10 @@ test(save_outside,
      true(Reply == error("laas.openrobots.ontology.exceptions.OntologyServerException",
                          "Error while opening ../x.owl to output the ontology: \c
                           files are only written under the save directory."))) :-
-    srv_call(save, ['../x.owl'], Reply).
+    test_call(save, ['../x.owl'], Reply).
 test(save_absolute,
      true(Name == "laas.openrobots.ontology.exceptions.OntologyServerException")) :-
-    srv_call(save, ['/tmp/oro-test-x.owl'], error(Name, _)).
+    test_call(save, ['/tmp/oro-test-x.owl'], error(Name, _)).
 
 :- end_tests(srv_admin).
 
@@ -1117,28 +950,28 @@ test(save_absolute,
 
 srv_seed_table :-
     srv_fresh,
-    srv_ok(add, ['[kitchen_table rdf:type Table, fork1 rdf:type Fork, \c
-                  glass1 rdf:type Glass]']),
-    srv_ok(add, ['[fork1 isOn kitchen_table]']).
+    test_ok(add, ['[kitchen_table rdf:type Table, fork1 rdf:type Fork, \c
+                   glass1 rdf:type Glass]']),
+    test_ok(add, ['[fork1 isOn kitchen_table]']).
 
 test(find_on_table, [ setup(srv_seed_table),
                       true(Reply == ok("[\"fork1\"]"))
                     ]) :-
-    srv_call(find, [o, '[?o isAt kitchen_table]'], Reply).
+    test_call(find, [o, '[?o isAt kitchen_table]'], Reply).
 test(tableware, [ setup(srv_seed_table),
                   true(Replies == [ok("false"), ok(""), ok("true")])
                 ]) :-
-    srv_calls([ check-['[fork1 rdf:type Artifact]'],
-                add-['[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]'],
-                check-['[fork1 rdf:type Artifact]']
-              ],
-              Replies).
+    test_calls([ check-['[fork1 rdf:type Artifact]'],
+                 add-['[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]'],
+                 check-['[fork1 rdf:type Artifact]']
+               ],
+               Replies).
 test(glass_on_table, [ setup(srv_seed_table),
                        true(Xs == ["fork1", "glass1"])
                      ]) :-
-    srv_ok(add, ['[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]']),
-    srv_ok(add, ['[glass1 isOn kitchen_table]']),
-    srv_set_call(find, [o, '[?o isAt kitchen_table, ?o rdf:type Artifact]'], Xs).
+    test_ok(add, ['[Fork rdfs:subClassOf Tableware,Glass rdfs:subClassOf Tableware]']),
+    test_ok(add, ['[glass1 isOn kitchen_table]']),
+    test_set_call(find, [o, '[?o isAt kitchen_table, ?o rdf:type Artifact]'], Xs).
 test(events, [ setup(srv_fresh),
                true(Messages == [ ok(""), ok(""), ok("[\"fork1\"]"), uuid,
                                   ok(""), event(Id, "[\"fork1\"]"),
@@ -1146,22 +979,22 @@ test(events, [ setup(srv_fresh),
                                 ])
              ]) :-
     % The whole seed session: the reply comes before the event it causes.
-    srv_connected(Conn,
-                  ( oro_call(Conn, add, ['[kitchen_table rdf:type Table, \c
-                                           fork1 rdf:type Fork, \c
-                                           glass1 rdf:type Glass]'], R1),
-                    oro_call(Conn, add, ['[fork1 isOn kitchen_table]'], R2),
-                    oro_call(Conn, find, [o, '[?o isAt kitchen_table]'], R3),
-                    oro_call(Conn, registerEvent,
-                             ['NEW_INSTANCE', 'ON_TRUE', o,
-                              '[?o isAt kitchen_table, ?o rdf:type Artifact]'],
-                             R4),
-                    oro_send(Conn, add, ['[Fork rdfs:subClassOf Tableware,\c
-                                           Glass rdfs:subClassOf Tableware]']),
-                    srv_receive_n(Conn, 2, [R5, E1]),
-                    oro_send(Conn, add, ['[glass1 isOn kitchen_table]']),
-                    srv_receive_n(Conn, 2, [R6, E2])
-                  )),
+    test_connected(Conn,
+                   ( oro_call(Conn, add, ['[kitchen_table rdf:type Table, \c
+                                            fork1 rdf:type Fork, \c
+                                            glass1 rdf:type Glass]'], R1),
+                     oro_call(Conn, add, ['[fork1 isOn kitchen_table]'], R2),
+                     oro_call(Conn, find, [o, '[?o isAt kitchen_table]'], R3),
+                     oro_call(Conn, registerEvent,
+                              ['NEW_INSTANCE', 'ON_TRUE', o,
+                               '[?o isAt kitchen_table, ?o rdf:type Artifact]'],
+                              R4),
+                     oro_send(Conn, add, ['[Fork rdfs:subClassOf Tableware,\c
+                                            Glass rdfs:subClassOf Tableware]']),
+                     test_receive_n(Conn, 2, [R5, E1]),
+                     oro_send(Conn, add, ['[glass1 isOn kitchen_table]']),
+                     test_receive_n(Conn, 2, [R6, E2])
+                   )),
     (   R4 = ok(Id),
         srv_uuid(Id)
     ->  U = uuid
@@ -1191,24 +1024,24 @@ test(malformed_batch_changes_nothing,
                          ok("false")
                        ])
      ]) :-
-    srv_calls([ check-['[horse rdf:type Animal]'],
-                add-['[horse rdf:type Animal, toto titi, fish rdf:type Animal]'],
-                check-['[horse rdf:type Animal]'],
-                check-['[fish rdf:type Animal]']
-              ],
-              Replies).
+    test_calls([ check-['[horse rdf:type Animal]'],
+                 add-['[horse rdf:type Animal, toto titi, fish rdf:type Animal]'],
+                 check-['[horse rdf:type Animal]'],
+                 check-['[fish rdf:type Animal]']
+               ],
+               Replies).
 test(unterminated_quote,
      [ setup(srv_fresh),
        true(Replies == [Illegal, Illegal, ok("false"), ok("\"oro-server 0.8.2\"")])
      ]) :-
     Illegal = "laas.openrobots.ontology.exceptions.IllegalStatementException",
-    srv_connected(Conn,
-                  ( oro_call(Conn, add, ['["toto likes tata, horse rdf:type Animal]'], R1),
-                    oro_call(Conn, add, ['[\'toto likes tata]'], R2),
-                    oro_call(Conn, check, ['[horse rdf:type Animal]'], R3),
-                    oro_call(Conn, hello, [], R4)
-                  )),
-    maplist(srv_error_name, [R1, R2], [E1, E2]),
+    test_connected(Conn,
+                   ( oro_call(Conn, add, ['["toto likes tata, horse rdf:type Animal]'], R1),
+                     oro_call(Conn, add, ['[\'toto likes tata]'], R2),
+                     oro_call(Conn, check, ['[horse rdf:type Animal]'], R3),
+                     oro_call(Conn, hello, [], R4)
+                   )),
+    maplist(test_error_name, [R1, R2], [E1, E2]),
     Replies = [E1, E2, R3, R4].
 test(invalid_utf8,
      true(Messages == [ error("laas.openrobots.ontology.exceptions.OntologyServerException",
@@ -1218,11 +1051,11 @@ test(invalid_utf8,
     string_codes("check\n[a ", Before),
     string_codes(" c]\n#end#\n", After),
     append([Before, [0xff, 0xc3, 0x28], After], Bytes),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, bytes(Bytes)),
-                    oro_receive(Conn, M1),
-                    oro_call(Conn, hello, [], M2)
-                  )),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, bytes(Bytes)),
+                     oro_receive(Conn, M1),
+                     oro_call(Conn, hello, [], M2)
+                   )),
     Messages = [M1, M2].
 test(overlong_utf8,
      true(Messages == [ error("laas.openrobots.ontology.exceptions.OntologyServerException",
@@ -1233,11 +1066,11 @@ test(overlong_utf8,
     string_codes("getLabel\n", Before),
     string_codes("\n#end#\n", After),
     append([Before, [0xc0, 0xaf], After], Bytes),
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, bytes(Bytes)),
-                    oro_receive(Conn, M1),
-                    oro_call(Conn, hello, [], M2)
-                  )),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, bytes(Bytes)),
+                     oro_receive(Conn, M1),
+                     oro_call(Conn, hello, [], M2)
+                   )),
     Messages = [M1, M2].
 test(valid_utf8, [ setup(srv_fresh),
                    true(Replies == [ok(""), ok(Quoted)])
@@ -1245,18 +1078,18 @@ test(valid_utf8, [ setup(srv_fresh),
     Label = "\u00e9t\u00e9 \u00e0 Z\u00fcrich \u2014 \u2615 \U0001F916",
     format(string(Set), '[cafe rdfs:label "~w"]', [Label]),
     format(string(Quoted), '"~w"', [Label]),
-    srv_calls([ add-[Set],
-                getLabel-[cafe]
-              ],
-              Replies).
+    test_calls([ add-[Set],
+                 getLabel-[cafe]
+               ],
+               Replies).
 test(nul_bytes, true(Kinds == [answered, ok("\"oro-server 0.8.2\"")])) :-
-    srv_connected(Conn,
-                  ( oro_send_raw(Conn, "check\n[nul\u0000x likes tata]\n#end#\n"),
-                    oro_receive(Conn, M1),
-                    oro_send_raw(Conn, "hel\u0000lo\n#end#\n"),
-                    oro_receive(Conn, M2),
-                    oro_call(Conn, hello, [], M3)
-                  )),
+    test_connected(Conn,
+                   ( oro_send_raw(Conn, "check\n[nul\u0000x likes tata]\n#end#\n"),
+                     oro_receive(Conn, M1),
+                     oro_send_raw(Conn, "hel\u0000lo\n#end#\n"),
+                     oro_receive(Conn, M2),
+                     oro_call(Conn, hello, [], M3)
+                   )),
     (   maplist(srv_reply_kind, [M1, M2], K12),
         subtract(K12, [ok, error], [])
     ->  Kinds = [answered, M3]
@@ -1276,15 +1109,15 @@ test(request_too_large,
 test(disconnect_mid_request, [ setup(srv_fresh),
                                true(Replies == [ok("\"oro-server 0.8.2\""), ok("false")])
                              ]) :-
-    srv_connected(Conn, oro_send_raw(Conn, "add\n[midway rdf:type Animal")),
-    srv_connected(Conn2, oro_send_raw(Conn2, "add\n[midway rdf:type Animal]\n#en")),
-    srv_calls([ hello-[],
-                check-['[midway rdf:type Animal]']
-              ],
-              Replies).
+    test_connected(Conn, oro_send_raw(Conn, "add\n[midway rdf:type Animal")),
+    test_connected(Conn2, oro_send_raw(Conn2, "add\n[midway rdf:type Animal]\n#en")),
+    test_calls([ hello-[],
+                 check-['[midway rdf:type Animal]']
+               ],
+               Replies).
 test(disconnect_before_reply, true(Reply == ok("\"oro-server 0.8.2\""))) :-
-    srv_connected(Conn, oro_send(Conn, listMethods, [])),
-    srv_call(hello, [], Reply).
+    test_connected(Conn, oro_send(Conn, listMethods, [])),
+    test_call(hello, [], Reply).
 
 :- end_tests(srv_bad_input).
 
@@ -1302,24 +1135,24 @@ srv_too_large([Kind, Closed, Hello, Check]) :-
     string_codes(Big, Codes),
     atomics_to_string(["add\n[", Big, " rdf:type Animal]\n#end#\n"], Request),
     message_queue_create(Queue),
-    srv_connected(Conn,
-                  ( thread_create(srv_send_big(Conn, Request, Queue), Sender, []),
-                    oro_receive(Conn, Reply),
-                    oro_receive(Conn, Closed),
-                    (   thread_get_message(Queue, sent(_), [timeout(10)])
-                    ->  true
-                    ;   catch(thread_signal(Sender, abort), _, true)
-                    ),
-                    thread_join(Sender, _)
-                  )),
+    test_connected(Conn,
+                   ( thread_create(srv_send_big(Conn, Request, Queue), Sender, []),
+                     oro_receive(Conn, Reply),
+                     oro_receive(Conn, Closed),
+                     (   thread_get_message(Queue, sent(_), [timeout(10)])
+                     ->  true
+                     ;   catch(thread_signal(Sender, abort), _, true)
+                     ),
+                     thread_join(Sender, _)
+                   )),
     message_queue_destroy(Queue),
     (   Reply = error(_, Message),
         sub_string(Message, _, _, _, "1048576")
     ->  Kind = error
     ;   Kind = Reply
     ),
-    srv_call(hello, [], Hello),
-    srv_set_call(find, [x, '[?x rdf:type Animal]'], Check).
+    test_call(hello, [], Hello),
+    test_set_call(find, [x, '[?x rdf:type Animal]'], Check).
 
 srv_send_big(Conn, Request, Queue) :-
     catch(oro_send_raw(Conn, Request), Error, true),
@@ -1340,14 +1173,14 @@ test(eight_clients, [ setup(srv_fresh),
                     ]) :-
     numlist(1, 8, Clients),
     findall(N-ok, member(N, Clients), Expected),
-    srv_port(Port),
+    test_server_port(Port),
     message_queue_create(Queue),
     maplist(srv_start_client(Port, Queue), Clients, Threads),
     srv_collect(8, Queue, Results0),
     maplist(srv_join, Threads),
     message_queue_destroy(Queue),
     keysort(Results0, Results),
-    srv_set_call(find, [s, '[?s ccMember ccSet]'], Members),
+    test_set_call(find, [s, '[?s ccMember ccSet]'], Members),
     length(Members, Count).
 
 :- end_tests(srv_concurrency).
@@ -1436,8 +1269,7 @@ srv_join(Thread) :-
                ]).
 
 test(robot_session_2011, true(Problems == [])) :-
-    srv_test_dir(Dir),
-    atom_concat(Dir, '/../../shared/workloads/robot-session-2011.log', Log),
+    test_path('../../shared/workloads/robot-session-2011.log', Log),
     (   exists_file(Log)
     ->  srv_replay(Log, Problems)
     ;   format(user_error,
@@ -1460,12 +1292,12 @@ test(robot_session_2011, true(Problems == [])) :-
 srv_replay(Log, Problems) :-
     read_file_to_string(Log, Text, [encoding(utf8)]),
     split_string(Text, "\n", "\r", Lines),
-    convlist(srv_log_request, Lines, Requests0),
+    convlist(test_log_request, Lines, Requests0),
     partition(srv_unparsed, Requests0, Unparsed, Requests),
-    srv_set_call(listSimpleMethods, [], Signatures),
+    test_set_call(listSimpleMethods, [], Signatures),
     maplist(srv_signature_key, Signatures, Keys),
     sort(Keys, Listed),
-    srv_port(Port),
+    test_server_port(Port),
     call_cleanup(
         ( maplist(srv_replay_request(Port, Listed), Requests, Outcomes),
           aggregate_all(count, srv_replay_conn(_, _), NConns)
@@ -1512,48 +1344,14 @@ srv_signature_key(Signature, Lower/Arity) :-
         length(Parts, Arity)
     ).
 
-%   srv_log_request(+Line, -Request) is semidet.
-%
-%   request(Thread, Method, Params) for a `Got incoming request` line
-%   (Params are parameter lines), bad(Line) if its arguments do not
-%   parse.
-
-srv_log_request(Line, Request) :-
-    sub_string(Line, _, _, After, "Got incoming request: "),
-    !,
-    sub_string(Line, _, After, 0, Call),
-    (   once(sub_string(Line, B, _, _, "[thread ")),
-        Start is B + 8,
-        sub_string(Line, Start, _, 0, Rest),
-        once(sub_string(Rest, L, _, _, "]"))
-    ->  sub_string(Rest, 0, L, _, Thread)
-    ;   Thread = ""
-    ),
-    (   once(sub_string(Call, Open, _, _, "(")),
-        sub_string(Call, 0, Open, _, Method),
-        string_concat(CallHead, ")", Call),
-        ArgsStart is Open + 1,
-        sub_string(CallHead, ArgsStart, _, 0, ArgsText),
-        atomics_to_string(["[", ArgsText, "]"], JSON),
-        catch(srv_json(JSON, Args), _, fail),
-        is_list(Args),
-        maplist(srv_param_line, Args, Params)
-    ->  Request = request(Thread, Method, Params)
-    ;   Request = bad(Line)
-    ).
-
-srv_param_line(Arg, Line) :-
-    with_output_to(string(Line),
-                   json_write(current_output, Arg, [width(0)])),
-    \+ sub_string(Line, _, _, _, "\n").
-
 %   srv_replay_request(+Port, +Listed, +Request, -Outcome)
 %
 %   Outcome is ok(Method), error(Method, Name),
 %   not_implemented(Method/Arity) (a method not listed by
 %   listSimpleMethods) or problem(Method, Reply).
 
-srv_replay_request(Port, Listed, request(Thread, Method, Params), Outcome) :-
+srv_replay_request(Port, Listed, request(_, Thread, Method, Params),
+                   Outcome) :-
     (   srv_replay_conn(Thread, Conn)
     ->  true
     ;   oro_connect(Port, Conn),

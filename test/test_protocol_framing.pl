@@ -5,15 +5,12 @@
 */
 
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(socket)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/../server/oro_protocol', Protocol),
-   use_module(Protocol),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client).
+:- use_module('../server/oro_protocol').
 
 
                  /*******************************
@@ -140,15 +137,6 @@ with_connection(Server, Conn, Goal, Status) :-
 echo(Method, Params, ok(Line)) :-
     maplist(string_value, [Method|Params], Values),
     oro_encode_value(list(Values), Line).
-
-%   receive_n(+Conn, +N, -Messages)
-
-receive_n(_, 0, []) :-
-    !.
-receive_n(Conn, N, [Message|Messages]) :-
-    oro_receive(Conn, Message),
-    N1 is N - 1,
-    receive_n(Conn, N1, Messages).
 
 string_of(Length, Code, String) :-
     format(string(String), "~*c", [Length, Code]).
@@ -398,11 +386,11 @@ test(parser_vector,
     with_connection(framing, C,
                     ( oro_send_raw(C, "help\naddForAgent\nTOTO\n\c
                                        [\"TATA likes TOTO\"]\n#end#\ntest2\n"),
-                      receive_n(C, 2, R1),
+                      test_receive_n(C, 2, R1),
                       oro_send_raw(C, "#end#\nhelp\ntest3\nparam1\n#end"),
-                      receive_n(C, 2, R2),
+                      test_receive_n(C, 2, R2),
                       oro_send_raw(C, "#\n"),
-                      receive_n(C, 1, R3),
+                      test_receive_n(C, 1, R3),
                       append([R1, R2, R3], Replies)
                     ),
                     Status).
@@ -419,7 +407,7 @@ test(crlf, Replies == [A, P]) :-
     echo("ping", [], P),
     with_connection(framing, C,
                     ( oro_send_raw(C, "add\r\n[a b c]\r\n#end#\r\nping\r\n#end#\r\n"),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     _).
 test(lone_cr, Replies == [A, P]) :-
@@ -427,14 +415,14 @@ test(lone_cr, Replies == [A, P]) :-
     echo("ping", [], P),
     with_connection(framing, C,
                     ( oro_send_raw(C, "add\r[a b c]\r#end#\rping\r#end#\r"),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     _).
 test(end_on_same_line, Replies == [A]) :-
     echo("add", ["[a b c]"], A),
     with_connection(framing, C,
                     ( oro_send_raw(C, "add\n[a b c]#end#"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(pipelined, Replies == [A, B, X]) :-
@@ -443,7 +431,7 @@ test(pipelined, Replies == [A, B, X]) :-
     echo("c", [], X),
     with_connection(framing, C,
                     ( oro_send_raw(C, "a\n#end#\nb\nx\n#end#c\n#end#\n"),
-                      receive_n(C, 3, Replies)
+                      test_receive_n(C, 3, Replies)
                     ),
                     _).
 test(many_pipelined, Replies == Expected) :-
@@ -456,54 +444,54 @@ test(many_pipelined, Replies == Expected) :-
                     ), Ns, Expected),
     with_connection(framing, C,
                     ( oro_send_raw(C, Text),
-                      receive_n(C, 200, Replies)
+                      test_receive_n(C, 200, Replies)
                     ),
                     _).
 test(leading_blank_lines, Replies == [F]) :-
     echo("foo", ["bar"], F),
     with_connection(framing, C,
                     ( oro_send_raw(C, "\n\n\r\nfoo\nbar\n#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(bare_end, Replies == [ok("[\"\"]")]) :-
     with_connection(framing, C,
                     ( oro_send_raw(C, "#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(bare_end_after_request, Replies == [F, ok("[\"\"]")]) :-
     echo("foo", [], F),
     with_connection(framing, C,
                     ( oro_send_raw(C, "foo\n#end#\n#end#\n"),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     _).
 test(empty_lines_request_discarded, Replies == [P]) :-
     echo("ping", [], P),
     with_connection(framing, C,
                     ( oro_send_raw(C, "\n\n#end#\nping\n#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(embedded_empty_lines, Replies == [F]) :-
     echo("find", ["x", "", "[..]"], F),
     with_connection(framing, C,
                     ( oro_send_raw(C, "find\nx\n\n[..]\n\n#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(method_verbatim, Replies == [ok("[\"add \"]")]) :-
     with_connection(framing, C,
                     ( oro_send_raw(C, "add \n#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(help_end_swallowed, Replies == [ok("\"help\""), P]) :-
     echo("ping", [], P),
     with_connection(framing, C,
                     ( oro_send_raw(C, "help\n#end#\nping\n#end#\n"),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     _).
 test(help_answered_before_end, Reply == ok("\"help\"")) :-
@@ -526,7 +514,7 @@ test(nul_bytes, Replies == [A]) :-
     echo("a\u0000b", ["\u0000"], A),
     with_connection(framing, C,
                     ( oro_send_raw(C, "a\u0000b\n\u0000\n#end#\n"),
-                      receive_n(C, 1, Replies)
+                      test_receive_n(C, 1, Replies)
                     ),
                     _).
 test(unicode, Replies == [A]) :-
@@ -542,7 +530,7 @@ test(invalid_utf8_then_valid,
     append([`add\n`, [0xFF, 0xFE], `\n#end#\nping\n#end#\n`], Bytes),
     with_connection(framing, C,
                     ( oro_send_raw(C, bytes(Bytes)),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     _).
 test(invalid_utf8_variants, Replies == [E, E, E, P]) :-
@@ -555,7 +543,7 @@ test(invalid_utf8_variants, Replies == [E, E, E, P]) :-
            ], Bytes),
     with_connection(framing, C,
                     ( oro_send_raw(C, bytes(Bytes)),
-                      receive_n(C, 4, Replies)
+                      test_receive_n(C, 4, Replies)
                     ),
                     _).
 test(big_line, [Len-Status == 3000010-end_of_file]) :-
@@ -583,7 +571,7 @@ test(disconnect_after_help, Status == end_of_file) :-
 test(close, [Replies-Status == [closing, end_of_file]-closed]) :-
     with_connection(framing, C,
                     ( oro_send_raw(C, "close\n#end#\n"),
-                      receive_n(C, 2, Replies)
+                      test_receive_n(C, 2, Replies)
                     ),
                     Status).
 

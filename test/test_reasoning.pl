@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 
 /*  Tests for the inference closure (ORO-SPEC §5, §11): what oro_holds/4,
@@ -15,32 +15,13 @@
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 
-:- dynamic reasoning_test_dir/1.
-
-:- prolog_load_context(directory, Dir),
-   retractall(reasoning_test_dir(_)),
-   assertz(reasoning_test_dir(Dir)).
-
-reasoning_fixture(File, Path) :-
-    reasoning_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
-
 %   Fresh stores: the test ontology alone, or the common-sense one.
 
 reasoning_testsuite :-
-    reasoning_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]).
+    test_store_testsuite.
 
 reasoning_commonsense :-
     oro_init([]).
-
-%   reasoning_find(+Var, +Patterns, -Names): oro_find/4 on the robot
-%   model, values contracted (oro_term_text/2) and sorted.
-
-reasoning_find(Var, Patterns, Names) :-
-    oro_find(myself, Var, Patterns, Values),
-    maplist(oro_term_text, Values, Names0),
-    sort(Names0, Names).
 
 %   reasoning_types(+Name, -Classes): the contracted classes of Name.
 
@@ -77,22 +58,22 @@ test(lattice_types_of_f, [ setup(reasoning_testsuite),
 test(instances_of_a, [ setup(reasoning_testsuite),
                        true(Xs == [e, f, j, k])
                      ]) :-
-    reasoning_find(x, ["?x rdf:type A"], Xs).
+    test_find(myself, x, ["?x rdf:type A"], Xs).
 test(find_monkeys, [ setup(reasoning_testsuite),
                      true(Xs == [baboon, gorilla])
                    ]) :-
-    reasoning_find(x, ["?x rdf:type Monkey"], Xs).
+    test_find(myself, x, ["?x rdf:type Monkey"], Xs).
 test(find_animals, [ setup(reasoning_testsuite),
                      true(Xs == [baboon, cow, gorilla])
                    ]) :-
-    reasoning_find(x, ["?x rdf:type Animal"], Xs).
+    test_find(myself, x, ["?x rdf:type Animal"], Xs).
 test(subclass_statement_holds, [setup(reasoning_testsuite)]) :-
     oro_check(myself, ["Monkey rdfs:subClassOf Animal",
                        "F rdfs:subClassOf A"]).
 test(superclasses_by_find, [ setup(reasoning_testsuite),
                              true(Cs == ['Animal', 'Monkey', 'owl:Thing'])
                            ]) :-
-    reasoning_find(c, ["Monkey rdfs:subClassOf ?c"], Cs).
+    test_find(myself, c, ["Monkey rdfs:subClassOf ?c"], Cs).
 
 :- end_tests(subclass_closure).
 
@@ -133,7 +114,7 @@ test(find_by_domain, [ setup(reasoning_testsuite),
                        true(Xs == [baboon, cow, gorilla, sheep])
                      ]) :-
     oro_add(myself, ["sheep eats grass"]),
-    reasoning_find(animals, ["?animals rdf:type Animal"], Xs).
+    test_find(myself, animals, ["?animals rdf:type Animal"], Xs).
 test(datatype_range_types_nothing, [ setup(reasoning_testsuite),
                                      true(Classes == ['Animal', 'owl:Thing'])
                                    ]) :-
@@ -158,7 +139,7 @@ test(two_levels, [setup(reasoning_testsuite)]) :-
 test(predicates_between, [ setup(reasoning_testsuite),
                            true(Ps == [climbsOn, isAt, isOn])
                          ]) :-
-    reasoning_find(p, ["baboon ?p banana_tree"], Ps).
+    test_find(myself, p, ["baboon ?p banana_tree"], Ps).
 test(super_property_not_down, [setup(reasoning_testsuite), fail]) :-
     oro_add(myself, ["cat isOn mat"]),
     oro_check(myself, ["cat climbsOn mat"]).
@@ -172,7 +153,7 @@ test(sub_property_added, [ setup(reasoning_testsuite),
     oro_check(myself, ["mouse eats cheese",
                        "mouse rdf:type Animal",
                        "cheese rdf:type Plant"]),
-    reasoning_find(x, ["?x eats cheese"], Xs).
+    test_find(myself, x, ["?x eats cheese"], Xs).
 
 :- end_tests(sub_property).
 
@@ -190,14 +171,14 @@ test(ontology_fact_holds, [setup(reasoning_testsuite)]) :-
 test(find_inverse, [ setup(reasoning_testsuite),
                      true(Xs == [cow])
                    ]) :-
-    reasoning_find(x, ["?x isOn grass"], Xs).
+    test_find(myself, x, ["?x isOn grass"], Xs).
 test(added_both_ways, [setup(reasoning_testsuite)]) :-
     oro_add(myself, ["stone isUnder frog", "frog isOn lily"]),
     oro_check(myself, ["frog isOn stone", "lily isUnder frog"]).
 test(apple_under_nothing, [ setup(reasoning_testsuite),
                             true(Xs == [])
                           ]) :-
-    reasoning_find(x, ["apple isUnder ?x"], Xs).
+    test_find(myself, x, ["apple isUnder ?x"], Xs).
 test(inverse_declared_at_run_time, [setup(reasoning_testsuite)]) :-
     oro_add(myself, ["isEatenBy owl:inverseOf eats"]),
     oro_check(myself, ["apple isEatenBy gorilla", "grass isEatenBy cow"]).
@@ -222,15 +203,15 @@ test(closed_super_property, [setup(reasoning_chain)]) :-
 test(ends_forward, [ setup(reasoning_chain),
                      true(Xs == [a2, a3, a4])
                    ]) :-
-    reasoning_find(x, ["a1 isAt ?x"], Xs).
+    test_find(myself, x, ["a1 isAt ?x"], Xs).
 test(ends_backward, [ setup(reasoning_chain),
                       true(Xs == [a1, a2, a3])
                     ]) :-
-    reasoning_find(x, ["?x isAt a4"], Xs).
+    test_find(myself, x, ["?x isAt a4"], Xs).
 test(inverse_transitive, [ setup(reasoning_chain),
                            true(Xs == [a1, a2, a3])
                          ]) :-
-    reasoning_find(x, ["a4 isUnder ?x"], Xs).
+    test_find(myself, x, ["a4 isUnder ?x"], Xs).
 test(holds_enumerates, [ setup(reasoning_chain),
                          true(Xs == [a2, a3, a4])
                        ]) :-
@@ -252,7 +233,7 @@ test(cycle_terminates, [ setup(reasoning_testsuite),
                          true(Xs == [c1, c2])
                        ]) :-
     oro_add(myself, ["c1 isAt c2", "c2 isAt c1"]),
-    reasoning_find(x, ["c1 isAt ?x"], Xs).
+    test_find(myself, x, ["c1 isAt ?x"], Xs).
 
 :- end_tests(transitive).
 
@@ -273,7 +254,7 @@ test(find_both_ways, [ setup(reasoning_commonsense),
                        true(Xs == [cup1, spoon1])
                      ]) :-
     oro_add(myself, ["cup1 isNextTo plate1", "plate1 isNextTo spoon1"]),
-    reasoning_find(x, ["plate1 isNextTo ?x"], Xs).
+    test_find(myself, x, ["plate1 isNextTo ?x"], Xs).
 test(not_transitive, [setup(reasoning_commonsense), fail]) :-
     oro_add(myself, ["cup1 isNextTo plate1", "plate1 isNextTo spoon1"]),
     oro_check(myself, ["cup1 isNextTo spoon1"]).
@@ -304,7 +285,7 @@ test(equivalent_class_instances, [ setup(reasoning_testsuite),
                                    true(Xs == [baboon, gorilla, kong])
                                  ]) :-
     oro_add(myself, ["Ape owl:equivalentClass Monkey", "kong rdf:type Ape"]),
-    reasoning_find(x, ["?x rdf:type Ape"], Xs).
+    test_find(myself, x, ["?x rdf:type Ape"], Xs).
 test(equivalent_classes_subclasses, [setup(reasoning_testsuite), nondet]) :-
     oro_add(myself, ["Ape owl:equivalentClass Monkey"]),
     oro_subclass(myself, oro:'Ape', oro:'Monkey'),
@@ -341,7 +322,7 @@ test(transitive, [setup(reasoning_kong)]) :-
 test(reflexive_class, [ setup(reasoning_kong),
                         true(Xs == [gorilla, kingkong, kk])
                       ]) :-
-    reasoning_find(x, ["?x owl:sameAs gorilla"], Xs).
+    test_find(myself, x, ["?x owl:sameAs gorilla"], Xs).
 test(types_shared, [setup(reasoning_kong)]) :-
     oro_check(myself, ["kk rdf:type Monkey", "kk rdf:type Animal"]).
 test(facts_shared, [setup(reasoning_kong)]) :-
@@ -352,12 +333,12 @@ test(facts_shared_back, [setup(reasoning_kong)]) :-
 test(find_substitutes, [ setup(reasoning_kong),
                          true(Xs == [gorilla, kingkong, kk])
                        ]) :-
-    reasoning_find(x, ["?x eats apple"], Xs).
+    test_find(myself, x, ["?x eats apple"], Xs).
 test(find_object_substitutes, [ setup(reasoning_testsuite),
                                  true(Xs == [gorilla])
                                ]) :-
     oro_add(myself, ["malus owl:sameAs apple"]),
-    reasoning_find(x, ["?x eats malus"], Xs).
+    test_find(myself, x, ["?x eats malus"], Xs).
 test(distinct_individuals_not_same, [setup(reasoning_kong), fail]) :-
     oro_check(myself, ["kk owl:sameAs cow"]).
 test(unlinked, [setup(reasoning_kong), fail]) :-
@@ -387,7 +368,7 @@ test(find_sees_new_class, [ setup(reasoning_testsuite),
                           ]) :-
     oro_add(myself, ["Insect rdfs:subClassOf Animal",
                      "ladybug rdf:type Insect"]),
-    reasoning_find(x, ["?x rdf:type Animal"], Xs).
+    test_find(myself, x, ["?x rdf:type Animal"], Xs).
 test(domain_added, [setup(reasoning_testsuite)]) :-
     oro_add(myself, ["paris likes dancing"]),
     \+ oro_check(myself, ["paris rdf:type Animal"]),
@@ -442,7 +423,7 @@ test(chain_link_removed, [ setup(reasoning_testsuite),
                          ]) :-
     oro_add(myself, ["a1 isOn a2", "a2 isOn a3", "a3 isOn a4"]),
     oro_remove(myself, ["a2 isOn a3"]),
-    reasoning_find(x, ["a1 isAt ?x"], Xs).
+    test_find(myself, x, ["a1 isAt ?x"], Xs).
 test(inferred_not_removable, [setup(reasoning_testsuite)]) :-
     oro_remove(myself, ["gorilla rdf:type Animal"]),
     oro_check(myself, ["gorilla rdf:type Animal"]).
@@ -451,7 +432,7 @@ test(same_as_removed, [ setup(reasoning_testsuite),
                       ]) :-
     oro_add(myself, ["kingkong owl:sameAs gorilla"]),
     oro_remove(myself, ["kingkong owl:sameAs gorilla"]),
-    reasoning_find(x, ["?x eats apple"], Xs).
+    test_find(myself, x, ["?x eats apple"], Xs).
 
 :- end_tests(removal).
 
@@ -467,7 +448,7 @@ test(int_value, [setup(reasoning_testsuite)]) :-
 test(int_value_find, [ setup(reasoning_testsuite),
                        true(Xs == [cow, gorilla])
                      ]) :-
-    reasoning_find(x, ["?x age 12"], Xs).
+    test_find(myself, x, ["?x age 12"], Xs).
 test(int_typed_explicitly, [setup(reasoning_testsuite)]) :-
     oro_check(myself, ["gorilla age \"12\"^^xsd:int"]).
 test(int_other_numeric_type,
@@ -478,7 +459,7 @@ test(int_other_numeric_type_find,
      [ setup(reasoning_testsuite),
        true(Xs == [cow, gorilla])
      ]) :-
-    reasoning_find(x, ["?x age 12^^xsd:integer"], Xs).
+    test_find(myself, x, ["?x age 12^^xsd:integer"], Xs).
 test(other_value, [setup(reasoning_testsuite), fail]) :-
     oro_check(myself, ["gorilla age 13"]).
 test(double_value, [setup(reasoning_testsuite)]) :-
@@ -486,17 +467,17 @@ test(double_value, [setup(reasoning_testsuite)]) :-
 test(boolean_value, [ setup(reasoning_testsuite),
                       true(Xs == [baboon])
                     ]) :-
-    reasoning_find(x, ["?x isFemale true"], Xs).
+    test_find(myself, x, ["?x isFemale true"], Xs).
 test(boolean_false, [setup(reasoning_testsuite), fail]) :-
     oro_check(myself, ["gorilla isFemale true"]).
 test(value_lexical_form, [ setup(reasoning_testsuite),
                            true(As == ['12'])
                          ]) :-
-    reasoning_find(a, ["gorilla age ?a"], As).
+    test_find(myself, a, ["gorilla age ?a"], As).
 test(labels_lexical_forms, [ setup(reasoning_testsuite),
                              true(Ls == ['baboon monkey', babouin])
                            ]) :-
-    reasoning_find(l, ["baboon rdfs:label ?l"], Ls).
+    test_find(myself, l, ["baboon rdfs:label ?l"], Ls).
 test(string_matches_en_label,
      [ setup(reasoning_testsuite)
      ]) :-
@@ -505,17 +486,17 @@ test(find_string_matches_en_label,
      [ setup(reasoning_testsuite),
        true(Xs == [baboon])
      ]) :-
-    reasoning_find(x, ["?x rdfs:label \"baboon monkey\""], Xs).
+    test_find(myself, x, ["?x rdfs:label \"baboon monkey\""], Xs).
 test(find_string_matches_fr_label,
      [ setup(reasoning_testsuite),
        true(Xs == [baboon])
      ]) :-
-    reasoning_find(x, ["?x rdfs:label 'babouin'"], Xs).
+    test_find(myself, x, ["?x rdfs:label 'babouin'"], Xs).
 test(added_string_label, [ setup(reasoning_testsuite),
                            true(Xs == [gorilla])
                          ]) :-
     oro_add(myself, ["gorilla rdfs:label \"king kong\""]),
-    reasoning_find(x, ["?x rdfs:label \"king kong\""], Xs).
+    test_find(myself, x, ["?x rdfs:label \"king kong\""], Xs).
 test(term_number_pattern, [ setup(reasoning_testsuite),
                             true(Xs == [cow, gorilla])
                           ]) :-

@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(readutil)).
@@ -8,11 +8,6 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_sparql)).
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/oro_test_client', Client),
-   use_module(Client),
-   atom_concat(Dir, '/../server/oro_server', Server),
-   use_module(Server).
 
 /*  Tests of oro's SPARQL engine (prolog/oro/oro_sparql.pl) and of the
     query, find and sparql methods (server/oro_methods_sparql.pl):
@@ -29,26 +24,16 @@
 */
 
 :- dynamic
-    sq_test_dir/1,                      % Dir
     sq_case/4,                          % Name, Data, Query, Expected
-    sq_loaded/1,                        % Data file loaded in the store
-    sq_server/1.                        % Server
-
-:- prolog_load_context(directory, Dir),
-   retractall(sq_test_dir(Dir)),
-   assertz(sq_test_dir(Dir)).
+    sq_loaded/1.                        % Data file loaded in the store
 
 		 /*******************************
 		 *           MANIFEST           *
 		 *******************************/
 
-sq_path(Rel, Path) :-
-    sq_test_dir(Dir),
-    atomic_list_concat([Dir, '/', Rel], Path).
-
 sq_load_manifest :-
     retractall(sq_case(_, _, _, _)),
-    sq_path('sparql/manifest.pl', File),
+    test_path('sparql/manifest.pl', File),
     setup_call_cleanup(
         open(File, read, In),
         sq_read_cases(In),
@@ -102,7 +87,7 @@ sq_use_data(Data) :-
     (   sq_loaded(Data)
     ->  true
     ;   atom_concat('sparql/data/', Data, Rel),
-        sq_path(Rel, File),
+        test_path(Rel, File),
         oro_init([commonsense(false), ontologies([File])]),
         retractall(sq_loaded(_)),
         assertz(sq_loaded(Data))
@@ -118,7 +103,7 @@ sq_forget_data :-
 sq_outcome(Data, QueryFile, Expected, Got, Want) :-
     sq_use_data(Data),
     atom_concat('sparql/queries/', QueryFile, Rel),
-    sq_path(Rel, File),
+    test_path(Rel, File),
     read_file_to_string(File, Query, []),
     catch(( oro_sparql(myself, Query, Result),
             Actual = result(Result)
@@ -295,7 +280,7 @@ test(files_exist, true(Missing == [])) :-
                  (   atom_concat('sparql/data/', D, F)
                  ;   atom_concat('sparql/queries/', Q, F)
                  ),
-                 sq_path(F, Path),
+                 test_path(F, Path),
                  \+ exists_file(Path)
                ), Missing0),
     sort(Missing0, Missing).
@@ -546,71 +531,20 @@ test(filter_heavy_find, [true(N-T == 100-fast)]) :-
 		 *            SOCKET            *
 		 *******************************/
 
+%   The unit's server: on the test ontology (test_server_start/1,
+%   test_server_stop/0); stopping it restores the time limit.
+
 sq_start_server :-
     sq_stop_server,
     sq_forget_data,
-    sq_path('fixtures/testsuite.ttl', File),
-    oro_server_start([port(0), host('127.0.0.1'), commonsense(false),
-                      ontology(File)], Server),
-    assertz(sq_server(Server)).
+    test_server_start_testsuite.
 
 sq_stop_server :-
-    forall(retract(sq_server(Server)),
-           ( sq_wait_idle(Server),
-             oro_server_stop(Server)
-           )),
+    test_server_stop,
     set_setting(oro_sparql:time_limit, 5).
 
-sq_wait_idle(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  sq_wait_until(catch(thread_pool_property(Pool, running(0)), _, true), 10)
-    ;   true
-    ).
-
-sq_wait_until(Goal, Seconds) :-
-    get_time(Now),
-    Deadline is Now + Seconds,
-    sq_wait_until_(Goal, Deadline).
-
-sq_wait_until_(Goal, Deadline) :-
-    (   call(Goal)
-    ->  true
-    ;   get_time(Now),
-        Now < Deadline
-    ->  sleep(0.01),
-        sq_wait_until_(Goal, Deadline)
-    ;   true
-    ).
-
-sq_port(Port) :-
-    sq_server(Server),
-    !,
-    oro_server_port(Server, Port).
-
-%   sq_call(+Method, +Params, -Reply): one request on a fresh connection.
-
-sq_call(Method, Params, Reply) :-
-    sq_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, Conn),
-        oro_call(Conn, Method, Params, Reply),
-        oro_disconnect(Conn)).
-
-%   sq_set_call(+Method, +Params, -Set): the reply is a list; Set is
-%   its ordered set of strings.
-
-sq_set_call(Method, Params, Set) :-
-    sq_call(Method, Params, Reply),
-    (   Reply = ok(Value)
-    ->  atom_string(Atom, Value),
-        atom_json_term(Atom, List, [value_string_as(string)]),
-        msort(List, Set)
-    ;   Set = Reply
-    ).
-
 sq_fresh :-
-    sq_call(reset, [], ok(_)).
+    test_ok(reset, []).
 
 %   The error table names SPARQL errors once the lead adds the clauses
 %   (server/oro_errors.pl); until then these two tests are skipped.
@@ -626,64 +560,64 @@ sq_error_table_knows_sparql :-
 
 test(query_instances, true(Xs == ["baboon", "gorilla"])) :-
     sq_fresh,
-    sq_set_call(query, [instances, "SELECT ?instances WHERE { ?instances rdf:type oro:Monkey }"], Xs).
+    test_set_call(query, [instances, "SELECT ?instances WHERE { ?instances rdf:type oro:Monkey }"], Xs).
 test(query_after_add, true(Xs == ["baboon", "fish"])) :-
     sq_fresh,
-    sq_call(add, ["[oro:fish oro:isFemale \"true\"^^xsd:boolean]"], ok(_)),
-    sq_set_call(query, [i, "SELECT ?i WHERE { ?i rdf:type owl:Thing . ?i oro:isFemale true }"], Xs).
+    test_call(add, ["[oro:fish oro:isFemale \"true\"^^xsd:boolean]"], ok(_)),
+    test_set_call(query, [i, "SELECT ?i WHERE { ?i rdf:type owl:Thing . ?i oro:isFemale true }"], Xs).
 test(find_no_pattern, true(R == ok("[]"))) :-
     sq_fresh,
-    sq_call(find, ['?mysterious', '[]'], R).
+    test_call(find, ['?mysterious', '[]'], R).
 test(find_empty_variable, true(R == error("laas.openrobots.ontology.exceptions.OntologyServerException",
                                           "Calling the find() method with an empty variable."))) :-
     sq_fresh,
-    sq_call(find, ['', '[?x rdf:type Animal]', '[?x != oro:cow]'], R).
+    test_call(find, ['', '[?x rdf:type Animal]', '[?x != oro:cow]'], R).
 test(find_empty_patterns_line, true(R == ok("[]"))) :-
     % ORO-SPEC 1.2: an empty line is a parameter; with find(String,
     % Set, Set) it is an empty pattern set, and no pattern gives [] (6.3)
-    sq_call(find, [x, '', '[?x rdf:type Animal]'], R).
+    test_call(find, [x, '', '[?x rdf:type Animal]'], R).
 test(find_one_filter, true(Xs == ["baboon", "gorilla"])) :-
     sq_fresh,
-    sq_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, ?mysterious oro:weight ?value]', '[?value >= 48]'], Xs).
+    test_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, ?mysterious oro:weight ?value]', '[?value >= 48]'], Xs).
 test(find_two_filters, true(Xs == ["baboon"])) :-
     sq_fresh,
-    sq_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, ?mysterious oro:weight ?value]', '[?value >= 48, ?value < 75.8]'], Xs).
+    test_set_call(find, [mysterious, '[?mysterious rdf:type oro:Monkey, ?mysterious oro:weight ?value]', '[?value >= 48, ?value < 75.8]'], Xs).
 test(find_label_filter, true(Xs == ["baboon monkey"])) :-
     sq_fresh,
-    sq_set_call(find, [label, '[?m rdf:type oro:Monkey, ?m oro:weight ?value, oro:baboon rdfs:label ?label]', '["langMatches(lang(?label), \\"en\\")"]'], Xs).
+    test_set_call(find, [label, '[?m rdf:type oro:Monkey, ?m oro:weight ?value, oro:baboon rdfs:label ?label]', '["langMatches(lang(?label), \\"en\\")"]'], Xs).
 test(find_quoted_regex_filter, true(Xs == ["baboon"])) :-
     sq_fresh,
-    sq_set_call(find, [x, '[?x rdfs:label ?l]', '["regex(?l, \\"^BAB\\", \\"i\\")"]'], Xs).
+    test_set_call(find, [x, '[?x rdfs:label ?l]', '["regex(?l, \\"^BAB\\", \\"i\\")"]'], Xs).
 test(find_null_filters, true(Xs == ["baboon", "gorilla"])) :-
     sq_fresh,
-    sq_set_call(find, [x, '[?x rdf:type Monkey]', null], Xs).
+    test_set_call(find, [x, '[?x rdf:type Monkey]', null], Xs).
 test(find_kb_api_filters, true(Xs == ["gorilla"])) :-
     sq_fresh,
-    sq_set_call(find, ['[?x]', '[?x rdf:type Monkey, ?x weight ?w]', '[?w > 50]', '[]'], Xs).
+    test_set_call(find, ['[?x]', '[?x rdf:type Monkey, ?x weight ?w]', '[?w > 50]', '[]'], Xs).
 test(find_for_agent_filters, true(Xs == ["cow"])) :-
     sq_fresh,
-    sq_set_call(findForAgent, [myself, x, '[?x age ?a]', '[?a < 20, ?x != oro:gorilla]'], Xs).
+    test_set_call(findForAgent, [myself, x, '[?x age ?a]', '[?a < 20, ?x != oro:gorilla]'], Xs).
 test(query_literal_values, true(Xs == ["100.2", "150.7", "48.5"])) :-
     sq_fresh,
-    sq_set_call(query, ["?w", "SELECT ?w WHERE { ?x oro:weight ?w }"], Xs).
+    test_set_call(query, ["?w", "SELECT ?w WHERE { ?x oro:weight ?w }"], Xs).
 test(query_unbound_rows_skipped, true(Xs == ["apple", "grass"])) :-
     sq_fresh,
-    sq_set_call(query, [f, "SELECT ?x ?f WHERE { ?x a oro:Animal OPTIONAL { ?x oro:eats ?f } }"], Xs).
+    test_set_call(query, [f, "SELECT ?x ?f WHERE { ?x a oro:Animal OPTIONAL { ?x oro:eats ?f } }"], Xs).
 test(query_escaped_newline, true(Xs == ["baboon", "gorilla"])) :-
     sq_fresh,
-    sq_set_call(query, [x, "SELECT ?x\\nWHERE { ?x a oro:Monkey }"], Xs).
+    test_set_call(query, [x, "SELECT ?x\\nWHERE { ?x a oro:Monkey }"], Xs).
 test(sparql_json, true(Names == ["baboon", "gorilla"])) :-
     sq_fresh,
-    sq_call(sparql, ["SELECT ?x ?w WHERE { ?x a oro:Monkey ; oro:weight ?w } ORDER BY ?w"], ok(JSON)),
+    test_call(sparql, ["SELECT ?x ?w WHERE { ?x a oro:Monkey ; oro:weight ?w } ORDER BY ?w"], ok(JSON)),
     atom_json_dict(JSON, Dict, []),
     findall(N, ( member(B, Dict.results.bindings),
                  string_concat("http://kb.openrobots.org#", N, B.x.value)
                ), Names).
 test(sparql_ask, true(R == ok("{\"head\":{},\"boolean\":true}"))) :-
     sq_fresh,
-    sq_call(sparql, ["ASK { oro:baboon oro:isAt ?where }"], R).
+    test_call(sparql, ["ASK { oro:baboon oro:isAt ?where }"], R).
 test(listed, true(Missing == [])) :-
-    sq_call(listSimpleMethods, [], ok(Value)),
+    test_call(listSimpleMethods, [], ok(Value)),
     atom_string(Atom, Value),
     atom_json_term(Atom, Listed, [value_string_as(string)]),
     subtract(["query(String, String)", "find(String, Set, Set)", "sparql(String)"],
@@ -691,7 +625,7 @@ test(listed, true(Missing == [])) :-
 test(parse_error_reply, [ condition(sq_error_table_knows_sparql),
                           true(Name-Found == "laas.openrobots.ontology.exceptions.InvalidQueryException"-true)
                         ]) :-
-    sq_call(query, [x, "SELECT ?x WHERE { ?x a oro:Monkey"], error(Name, Message)),
+    test_call(query, [x, "SELECT ?x WHERE { ?x a oro:Monkey"], error(Name, Message)),
     (   sub_string(Message, _, _, _, "com.hp.hpl.jena.query.QueryParseException"),
         sub_string(Message, _, _, _, "column 34")
     ->  Found = true
@@ -700,14 +634,14 @@ test(parse_error_reply, [ condition(sq_error_table_knows_sparql),
 test(find_filter_error_reply, [ condition(sq_error_table_knows_sparql),
                                 true(Name == "laas.openrobots.ontology.exceptions.InvalidQueryException")
                               ]) :-
-    sq_call(find, [x, '[?x rdf:type Monkey]', '[?x = ]'], error(Name, _)).
+    test_call(find, [x, '[?x rdf:type Monkey]', '[?x = ]'], error(Name, _)).
 test(error_reply_is_an_error, true(Kind == error)) :-
-    sq_call(sparql, ["SELECT WHERE"], Reply),
+    test_call(sparql, ["SELECT WHERE"], Reply),
     functor(Reply, Kind, _).
 test(time_limit_while_others_served, true(Outcome == [fast, limited])) :-
     sq_fresh,
     set_setting(oro_sparql:time_limit, 1.5),
-    sq_port(Port),
+    test_server_port(Port),
     sq_heavy_ask(Q),
     setup_call_cleanup(
         ( oro_connect(Port, Slow),

@@ -1,5 +1,5 @@
-:- prolog_load_context(directory, Dir), atom_concat(Dir, '/../prolog', Lib), ( user:file_search_path(library, Lib) -> true ; asserta(user:file_search_path(library, Lib)) ).
 :- use_module(library(plunit)).
+:- use_module(oro_test_support).
 :- use_module(library(oro)).
 
 /*  Tests for the eight taxonomy questions (ORO-SPEC §6.4, vectors of
@@ -11,24 +11,12 @@
 */
 
 :- use_module(library(semweb/rdf_db)).
-:- use_module(library(apply)).
 :- use_module(library(lists)).
-
-:- dynamic taxonomy_test_dir/1.
-
-:- prolog_load_context(directory, Dir),
-   retractall(taxonomy_test_dir(_)),
-   assertz(taxonomy_test_dir(Dir)).
-
-taxonomy_fixture(File, Path) :-
-    taxonomy_test_dir(Dir),
-    atomic_list_concat([Dir, '/fixtures/', File], Path).
 
 %   The store of §13.7: the test ontology plus insects.
 
 taxonomy_insects :-
-    taxonomy_fixture('testsuite.ttl', File),
-    oro_init([commonsense(false), ontologies([File])]),
+    test_store_testsuite,
     oro_add(myself, ["Insect rdfs:subClassOf Animal",
                      "Ladybird rdfs:subClassOf Insect"]).
 
@@ -39,8 +27,7 @@ taxonomy(Pred, Name, Names) :-
     oro_name_iri(Name, IRI),
     atom_concat(oro_, Pred, Goal),
     call(Goal, myself, IRI, IRIs),
-    maplist(oro_iri_name, IRIs, Names0),
-    sort(Names0, Names).
+    test_names(IRIs, Names).
 
 %   taxonomy_labelled(+Pred, +Name, -Pairs): Id-Label pairs, as the
 %   ORO protocol answers them (a map of ids to labels).
