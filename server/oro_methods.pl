@@ -762,7 +762,10 @@ connection_subscriber(Context, Subscriber) :-
 
 deliver_event(Out, Mutex, Id, Content) :-
     event_content(Content, Value),
-    with_mutex(Mutex, oro_write_event(Out, Id, Value)).
+    catch(with_mutex(Mutex, oro_write_event(Out, Id, Value)),
+          error(Error, _),
+          debug(oro(server), 'Event ~w not delivered: ~q', [Id, Error])).
+                                        % the client left: it is being cleaned up
 
 event_content([], void) :-
     !.
