@@ -443,21 +443,8 @@ resource_json(R, JSON) :-
     json_string(Name, JSON).
 
 json_string(Text, JSON) :-
-    with_output_to(string(JSON), json_write_string(Text)).
-
-json_write_string(Text) :-
-    atom_codes(Text, Codes),
-    put_char('"'),
-    forall(member(C, Codes), json_char(C)),
-    put_char('"').
-
-json_char(0'") :- !, write('\\"').
-json_char(0'\\) :- !, write('\\\\').
-json_char(0'\n) :- !, write('\\n').
-json_char(0'\r) :- !, write('\\r').
-json_char(0'\t) :- !, write('\\t').
-json_char(C) :- C < 0x20, !, format('\\u~|~`0t~16r~4+', [C]).
-json_char(C) :- put_char(C).
+    atom_string(Text, String),              % a string: never true/false/null
+    with_output_to(string(JSON), json_write(current_output, String)).
 
 		 /*******************************
 		 *           TAXONOMY           *

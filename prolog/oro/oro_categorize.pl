@@ -234,14 +234,14 @@ ancestors(Model, A, B, TypesA, TypesB, Same, S2) :-
     oro_classes_of(Model, B, TypesB),
     (   TypesA == TypesB
     ->  Same = true,
-        most_specific(Model, TypesA, S2)
+        oro_most_specific(Model, TypesA, S2)
     ;   Same = false,
         ord_intersection(TypesA, TypesB, S1),
         (   S1 = [_]
         ->  S2 = S1
         ;   rdf_equal(owl:'Thing', Thing),
             ord_del_element(S1, Thing, S1b),
-            most_specific(Model, S1b, S2)
+            oro_most_specific(Model, S1b, S2)
         )
     ).
 
@@ -412,7 +412,7 @@ profile(Model, X, X-Props) :-
     rdf_equal(rdf:type, Type),
     findall(C, member(Type-C, Facts), Types0),
     named_classes(Types0, Types),
-    most_specific(Model, Types, Direct),
+    oro_most_specific(Model, Types, Direct),
     rdf_equal(owl:'Nothing', Nothing),
     findall(P-(K-O),
             ( member(P-O, Facts),
@@ -667,23 +667,6 @@ property_kind(other, undecided).
 		 *           HELPERS            *
 		 *******************************/
 
-%   most_specific(+Model, +Classes, -Specific): the classes with no
-%   other class of Classes strictly below them (equivalent classes are
-%   at the same level).
-
-most_specific(Model, Classes, Specific) :-
-    exclude(has_strict_sub_in(Model, Classes), Classes, Specific).
-
-has_strict_sub_in(Model, Classes, C) :-
-    member(D, Classes),
-    D \== C,
-    strictly_below(Model, D, C),
-    !.
-
-strictly_below(Model, Sub, Super) :-
-    oro_subclass(Model, Sub, Super),
-    \+ oro_subclass(Model, Super, Sub).
-
 %   direct_below(+Model, +C, +Types, -Below): the direct sub-classes
 %   of C among the classes Types of an individual (dsub(C) ∩ types(x)
 %   of §10.4).  As Types holds every super-class of its members, a
@@ -695,7 +678,7 @@ direct_below(Model, C, Types, Below) :-
     exclude(has_strict_super_in(Model, Under), Under, Below).
 
 strictly_below_class(Model, C, T) :-
-    strictly_below(Model, T, C).
+    oro_strictly_below(Model, T, C).
 
 %   has_subclass(+Model, +C): C has a named strict sub-class.
 
@@ -710,7 +693,7 @@ has_subclass(Model, C) :-
 has_strict_super_in(Model, Classes, C) :-
     member(D, Classes),
     D \== C,
-    strictly_below(Model, C, D),
+    oro_strictly_below(Model, C, D),
     !.
 
 %   value_key(+Term, -Key): a canonical key under which equal values

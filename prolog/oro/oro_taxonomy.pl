@@ -6,7 +6,9 @@
             oro_instances/3,            % +Model, +Class, -Instances
             oro_direct_instances/3,     % +Model, +Class, -Instances
             oro_classes_of/3,           % +Model, +Individual, -Classes
-            oro_direct_classes_of/3     % +Model, +Individual, -Classes
+            oro_direct_classes_of/3,    % +Model, +Individual, -Classes
+            oro_most_specific/3,        % +Model, +Classes, -Specific
+            oro_strictly_below/3        % +Model, ?Sub, ?Super
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
@@ -162,8 +164,14 @@ unnamed(_, X) :-
     !.
 unnamed(Nothing, Nothing).
 
-%   most_specific(+Model, +Classes, -Specific): the classes of Classes
-%   with no other class of Classes strictly below them.
+%!  oro_most_specific(+Model, +Classes, -Specific) is det.
+%
+%   Specific are the classes of Classes with no other class of Classes
+%   strictly below them (equivalent classes are at the same level).
+
+oro_most_specific(Model, Classes, Specific) :-
+    must_be(list, Classes),
+    most_specific(Model, Classes, Specific).
 
 most_specific(Model, Classes, Specific) :-
     exclude(has_strict_sub_in(Model, Classes), Classes, Specific).
@@ -182,6 +190,13 @@ has_strict_super_in(Model, Classes, C) :-
     D \== C,
     strictly_below(Model, C, D),
     !.
+
+%!  oro_strictly_below(+Model, ?Sub, ?Super) is nondet.
+%
+%   Sub is a sub-class of Super and not equivalent to it.
+
+oro_strictly_below(Model, Sub, Super) :-
+    strictly_below(Model, Sub, Super).
 
 strictly_below(Model, Sub, Super) :-
     oro_subclass(Model, Sub, Super),
