@@ -749,10 +749,17 @@ evaluate_watcher(Id, Schema) :-
     ).
 evaluate_watcher(_, _).                     % dropped meanwhile
 
+%   The new dependencies are added before the old ones go: writers read
+%   them (relevant/1) to decide whether to send a change, and must never
+%   see a watcher with none.
+
 refresh_deps(Id, Model, Spec, Triples, State) :-
-    retractall(watcher_dep(_, _, Id)),
     watcher_deps(Spec, Model, Triples, State, Deps),
-    forall(member(D, Deps), assertz(watcher_dep(Model, D, Id))).
+    findall(D, watcher_dep(Model, D, Id), Old),
+    forall(( member(D, Deps), \+ memberchk(D, Old) ),
+           assertz(watcher_dep(Model, D, Id))),
+    forall(( member(D, Old), \+ memberchk(D, Deps) ),
+           retractall(watcher_dep(Model, D, Id))).
 
 evaluate(spec(fact_checking, _, _, _), Model, Triples, truth(Truth)) :-
     !,
