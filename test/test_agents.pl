@@ -6,7 +6,6 @@
 :- use_module(library(error)).
 :- use_module(library(filesex)).
 :- use_module(library(readutil)).
-:- use_module(library(settings)).
 :- use_module(library(aggregate)).
 
 /*  Tests for agent models (ORO-SPEC §6.6, §8, revise of §6.1, the

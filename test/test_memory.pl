@@ -4,7 +4,6 @@
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
-:- use_module(library(settings)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro/oro_memory),
               [ oro_memory_profile/2,
