@@ -59,15 +59,12 @@ Forward chaining with truth maintenance was the alternative; it costs
 several times more per assert (about 7x in a trial, STYLE.md) and makes
 removal expensive.
 
-Measured (SWI-Prolog 9.0.4, AMD EPYC, 50k asserted triples over the
-common-sense ontology; IRIs given, no parsing): a bare rdf/3 probe
-1.0 us, an asserted triple visible in the model 1.5 us, `x isOn y`
-4.4 us, `x isAt y` through isOn 8.7 us, an asserted type 7.4 us, an
-inferred type (Cup under Tableware under Artifact) 8.4 us, a false
-type 8.7 us; one rdf_assert 17.7 us against 22.5 us for a one-triple
-oro change (transaction and visibility check included).  Compiling
-the schema takes 6.6 ms with the common-sense ontology (30 ms with the
-OpenRobots ontology loaded too), and happens only on the first question
+Measured by bench/bench_reasoner.pl (SWI-Prolog 9.0.4, AMD EPYC, 50k
+asserted triples over the common-sense ontology, IRIs given): a bare
+rdf/3 probe 1.0 us, a triple asserted in the model 0.7 us, `x isOn y`
+3.1 us, `x isAt y` through isOn 5.0 us, an asserted type 3.3 us, an
+inferred type (Cup under Tableware under Artifact) 4.5 us, a false type
+4.8 us; recompiling the schema 4.4 ms, done only on the first question
 after a schema change.
 */
 
@@ -599,7 +596,7 @@ special_holds(_SameAs, Key, Model, S, O) :-
 same_as_known(Key, Model, X) :-
     (   s_same(Key, X, _)
     ->  true
-    ;   oro_individual_key(Key, Model, X)
+    ;   individual_key(Key, Model, X)
     ).
 
 %   One step: an asserted edge implying P, through its ways, with
@@ -1053,9 +1050,6 @@ used_kind(_, _, Kind, Kind).
 oro_individual(Model, X0) :-
     oro_resource(X0, X),
     schema(Model, Key),
-    individual_key(Key, Model, X).
-
-oro_individual_key(Key, Model, X) :-
     individual_key(Key, Model, X).
 
 %!  oro_same_individual(+Model, +X, -Y) is multi.

@@ -424,7 +424,7 @@ oro_wipe_models :-
                )).
 
 %   Presized hash tables double rdf_assert/4's speed on a growing store
-%   (3.6 us instead of 7.3 us a triple, measured); 2^18 buckets cost
+%   (1.5 us instead of 3.4 us a triple, bench/bench_reasoner.pl); 2^18 buckets cost
 %   about 20 MB for the nine indexes.
 
 presize_indexes :-
