@@ -153,8 +153,9 @@ oro_server_start(Options, Server) :-
     gensym(oro_pool_, Pool),
     thread_pool_create(Pool, Max, [backlog(0)]),
     get_time(Started),
-    Server = oro_server{socket:Socket, port:Port, pool:Pool,
-                        started:Started, accept:Accept},
+    message_queue_create(Control),
+    Server = oro_server{socket:Socket, host:Host, port:Port, pool:Pool,
+                        started:Started, accept:Accept, control:Control},
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
 
@@ -169,12 +170,31 @@ oro_server_port(Server, Port) :-
 %
 %   Stop accepting connections and release the listening socket.
 %   Connections in progress finish their current request.
+%
+%   The accept thread is told through the server's control queue and
+%   woken by a connection of our own: no asynchronous signal, which
+%   could land inside a handler and be taken for an error.
 
 oro_server_stop(Server) :-
-    thread_signal(Server.accept, throw(oro_stop)),
-    catch(thread_join(Server.accept, _), _, true),
+    thread_send_message(Server.control, stop),
+    wake_acceptor(Server),
+    thread_join(Server.accept, _),
     catch(tcp_close_socket(Server.socket), _, true),
+    message_queue_destroy(Server.control),
     catch(thread_pool_destroy(Server.pool), _, true).
+
+wake_acceptor(Server) :-
+    (   memberchk(Server.host, ['0.0.0.0', '::', ''])
+    ->  Host = '127.0.0.1'
+    ;   Host = Server.host
+    ),
+    catch(setup_call_cleanup(tcp_connect(Host:Server.port, Stream, []),
+                             true,
+                             close(Stream, [force(true)])),
+          E,
+          ( print_message(warning, E),
+            thread_signal(Server.accept, throw(oro_stop))
+          )).
 
 accept_loop(Server) :-
     catch(accept_connections(Server), oro_stop, true).
@@ -182,8 +202,12 @@ accept_loop(Server) :-
 accept_connections(Server) :-
     repeat,
     tcp_accept(Server.socket, Client, Peer),
-    start_connection(Server, Client, Peer),
-    fail.
+    (   thread_peek_message(Server.control, stop)
+    ->  !,
+        tcp_close_socket(Client)
+    ;   start_connection(Server, Client, Peer),
+        fail
+    ).
 
 start_connection(Server, Client, Peer) :-
     catch(thread_create_in_pool(Server.pool,
@@ -203,7 +227,7 @@ refuse_connection(Client, Error) :-
                                 "Too many connections: try again later.")
               ),
               close(Pair, [force(true)])),
-          _, true).
+          error(_, _), true).
 
 serve_connection(Server, Client, Peer) :-
     tcp_setopt(Client, nodelay),            % events right after replies
