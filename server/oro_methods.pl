@@ -70,6 +70,8 @@ oro_dispatch(Context, Method, Params, Reply) :-
     ),
     (   var(Error)
     ->  Reply = ok(Value)
+    ;   Error == oro_events_overflow        % the connection must close
+    ->  throw(Error)
     ;   oro_error_response(Error, Name, Message),
         debug(oro(server), 'Error: ~q', [Error]),
         Reply = error(Name, Message)

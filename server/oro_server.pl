@@ -49,6 +49,13 @@ nothing.
            'Maximum number of simultaneous client connections').
 :- setting(max_request_size, positive_integer, 16777216,
            'Maximum size of one request, in bytes').
+:- setting(max_params, positive_integer, 4096,
+           'Maximum number of parameters of one request').
+:- setting(idle_timeout, number, 0,
+           'Seconds a connection may stay silent before it is closed (0: never)').
+:- setting(write_timeout, number, 60,
+           'Seconds a reply may wait for a client that does not read, before \c
+           the client is disconnected').
 
 opt_type(port, port, nonneg).
 opt_type(host, host, atom).
@@ -246,6 +253,13 @@ serve_stream(Server, Pair, Peer) :-
     stream_pair(Pair, In, Out),
     set_stream(Out, encoding(utf8)),
     set_stream(Out, newline(posix)),
+    setting(write_timeout, WriteTimeout),
+    set_stream(Out, timeout(WriteTimeout)),
+    setting(idle_timeout, Idle),
+    (   Idle > 0
+    ->  set_stream(In, timeout(Idle))
+    ;   true
+    ),
     debug(oro(server), 'Connection from ~q', [Peer]),
     setting(max_request_size, Limit),
     thread_self(Me),
@@ -256,10 +270,28 @@ serve_stream(Server, Pair, Peer) :-
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
-                debug(oro(server), 'Connection ~q ended: ~q', [Peer, Error])),
+                connection_ended(Context, Error)),
           oro_connection_closed(Context)
         ),
         mutex_destroy(Mutex)).
+
+%   A connection silent for longer than idle_timeout is told why it is
+%   closed; other errors (the peer left, a reply it would not read
+%   within write_timeout) just end it.
+
+connection_ended(Context, error(timeout_error(read, _), _)) :-
+    !,
+    setting(idle_timeout, Idle),
+    format(string(Message), "No request for ~w s: closing the connection.",
+           [Idle]),
+    debug(oro(server), 'Connection ~q idle: closing', [Context.peer]),
+    catch(with_mutex(Context.mutex,
+                     oro_write_error(Context.out,
+                                     "laas.openrobots.ontology.exceptions.OntologyServerException",
+                                     Message)),
+          _, true).
+connection_ended(Context, Error) :-
+    debug(oro(server), 'Connection ~q ended: ~q', [Context.peer, Error]).
 
 serve_requests(Context, Reader0, Out) :-
     oro_read_request(Reader0, Request, Reader),
@@ -292,6 +324,15 @@ handle_request(bad(encoding), Context, Out) :-
     with_mutex(Context.mutex,
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                "The request is not valid UTF-8.")).
+handle_request(request(_, Params), Context, Out) :-
+    setting(max_params, Max),
+    length(Params, N),
+    N > Max,
+    !,
+    format(string(Message), "Too many parameters: ~D (at most ~D).", [N, Max]),
+    with_mutex(Context.mutex,
+               oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                               Message)).
 handle_request(request(Method, _), Context, Out) :-
     string_lower(Method, "close"),
     !,
