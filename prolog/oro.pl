@@ -2,6 +2,7 @@
           [ % setup
             oro_init/1,                 % +Options
             oro_reset/0,
+            oro_close/0,
             oro_robot_id/1,             % -Id
             % changes
             oro_add/2,                  % +Model, +Statements

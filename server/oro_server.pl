@@ -1,6 +1,7 @@
 :- module(oro_server,
           [ oro_server_start/2,         % +Options, -Server
             oro_server_stop/1,          % +Server
+            oro_server_shutdown/1,      % +Server
             oro_server_port/2           % +Server, -Port
           ]).
 :- use_module(library(socket)).
@@ -22,6 +23,7 @@
     swipl server/oro_server.pl [--port=N] [--host=ADDR] [--ontology=FILE]...
                                [--no-commonsense] [--robot-id=ID]
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
+                               [--db=DIR]
 
 An accept thread hands each connection to a worker of a bounded pool
 (`max_connections`); each worker reads requests with oro_protocol,
@@ -45,12 +47,17 @@ nothing.
    ;   true
    ).
 
+:- dynamic
+    connection/1.                   % Mutex of a live connection
+
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
 :- setting(max_request_size, positive_integer, 16777216,
            'Maximum size of one request, in bytes').
 :- setting(max_params, positive_integer, 4096,
            'Maximum number of parameters of one request').
+:- setting(shutdown_grace, number, 10,
+           'Seconds a shutdown waits for the request in progress of a connection').
 :- setting(idle_timeout, number, 0,
            'Seconds a connection may stay silent before it is closed (0: never)').
 :- setting(write_timeout, number, 60,
@@ -65,6 +72,7 @@ opt_type(robot_id, robot_id, atom).
 opt_type(time_base, time_base, nonneg).
 opt_type(save_dir, save_dir, directory).
 opt_type(plugin, plugin, file(read)).
+opt_type(db, db, atom).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -80,6 +88,9 @@ Options:
   --time-base=MS     Length of one memory time unit in ms (default 1000)
   --save-dir=DIR     Directory where save may write files (default .)
   --plugin=FILE      Load a Prolog plugin declaring extra methods; repeatable
+  --db=DIR           Journal the models in DIR (created if needed) and
+                     restore them from it on start: nothing acknowledged
+                     is lost, even on kill -9
   -h, --help         Show this help
 ").
 
@@ -114,9 +125,19 @@ main :-
                             authentication; anyone who can reach this address \c
                             can read and change the knowledge base.~n", [Host])
     ),
+    on_signal(term, _, shutdown_signal),
+    on_signal(int, _, shutdown_signal),
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
-    thread_get_message(oro_server_stop).
+    thread_get_message(oro_server_stop),
+    oro_server_shutdown(Server),
+    halt(0).
+
+%   SIGTERM and SIGINT are handled by the main thread, which waits for
+%   this message: the shutdown itself runs outside the signal handler.
+
+shutdown_signal(_Signal) :-
+    thread_send_message(main, oro_server_stop).
 
 loopback(Host) :-
     memberchk(Host, ['127.0.0.1', localhost, '::1']).
@@ -128,8 +149,8 @@ loopback(Host) :-
 %   free port), host(Host) (default '127.0.0.1'), ontology(File)
 %   (repeatable), commonsense(Bool), robot_id(Id), time_base(MS),
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
-%   plugin that cannot be loaded is reported and skipped).  Server is
-%   an opaque handle.
+%   plugin that cannot be loaded is reported and skipped), db(Dir) (see
+%   oro_init/1).  Server is an opaque handle.
 
 oro_server_start(Options, Server) :-
     must_be(list, Options),
@@ -139,8 +160,10 @@ oro_server_start(Options, Server) :-
     option(robot_id(RobotId), Options, ''),
     option(save_dir(SaveDir), Options, '.'),
     option(time_base(TimeBase), Options, 1000),
+    option(db(Db), Options, ''),
     findall(F, member(ontology(F), Options), Files),
-    oro_init([ commonsense(CommonSense),
+    oro_init([ db(Db),
+               commonsense(CommonSense),
                ontologies(Files),
                robot_id(RobotId),
                save_dir(SaveDir),
@@ -189,6 +212,42 @@ oro_server_stop(Server) :-
     catch(tcp_close_socket(Server.socket), _, true),
     message_queue_destroy(Server.control),
     catch(thread_pool_destroy(Server.pool), _, true).
+
+%!  oro_server_shutdown(+Server) is det.
+%
+%   Stop the server cleanly: stop accepting, let every request in
+%   progress finish and its reply be written (waiting at most
+%   `shutdown_grace` seconds for each connection), then close the
+%   journals.  Requests that arrive afterwards are not served.  Used on
+%   SIGTERM and SIGINT, before halting.
+
+oro_server_shutdown(Server) :-
+    oro_server_stop(Server),
+    setting(shutdown_grace, Grace),
+    findall(Mutex, connection(Mutex), Mutexes),
+    include(lock_connection(Grace), Mutexes, Locked),
+    oro_close,
+    length(Mutexes, N),
+    length(Locked, Idle),
+    debug(oro(server), 'Shut down: ~D of ~D connection(s) finished in time',
+          [Idle, N]).
+
+%   Holding a connection's mutex means no request of it is in progress,
+%   and none can start: the lock is kept until the process ends.
+
+lock_connection(Grace, Mutex) :-
+    Deadline is Grace * 20,
+    lock_connection(Deadline, 0, Mutex).
+
+lock_connection(Max, N, Mutex) :-
+    (   catch(mutex_trylock(Mutex), _, fail)
+    ->  true
+    ;   N < Max
+    ->  sleep(0.05),
+        N1 is N + 1,
+        lock_connection(Max, N1, Mutex)
+    ;   fail
+    ).
 
 wake_acceptor(Server) :-
     (   memberchk(Server.host, ['0.0.0.0', '::', ''])
@@ -264,7 +323,9 @@ serve_stream(Server, Pair, Peer) :-
     setting(max_request_size, Limit),
     thread_self(Me),
     setup_call_cleanup(
-        mutex_create(Mutex),
+        ( mutex_create(Mutex),
+          with_mutex(oro_connections, assertz(connection(Mutex)))
+        ),
         ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
                       mutex:Mutex, thread:Me, subscribers:slot([])},
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
@@ -273,7 +334,9 @@ serve_stream(Server, Pair, Peer) :-
                 connection_ended(Context, Error)),
           oro_connection_closed(Context)
         ),
-        mutex_destroy(Mutex)).
+        ( with_mutex(oro_connections, retractall(connection(Mutex))),
+          catch(mutex_destroy(Mutex), _, true)    % held by a shutdown
+        )).
 
 %   A connection silent for longer than idle_timeout is told why it is
 %   closed; other errors (the peer left, a reply it would not read

@@ -1,6 +1,7 @@
 :- module(oro_knowledge,
           [ oro_init/1,                 % +Options
             oro_reset/0,
+            oro_close/0,
             oro_add/2,                  % +Model, +Statements
             oro_add/3,                  % +Model, +Statements, +Profile
             oro_remove/2,               % +Model, +Statements
@@ -63,7 +64,8 @@ anything changes.
                        ontologies(list(atom)),
                        time_base(positive_integer),
                        robot_id(atom),
-                       save_dir(atom)
+                       save_dir(atom),
+                       db(atom)
                      ]).
 
 %!  oro_init(+Options) is det.
@@ -77,7 +79,10 @@ anything changes.
 %       N-Triples), loaded in order;
 %     - robot_id(+Id): a synonym of `myself`;
 %     - time_base(+MS): length of one memory time unit (default 1000);
-%     - save_dir(+Dir): where oro_save/2 may write (default `.`).
+%     - save_dir(+Dir): where oro_save/2 may write (default `.`);
+%     - db(+Dir): journal the models in Dir and restore what it holds
+%       (see oro_persist): every change reported done survives a
+%       crash.  Without it (the default) nothing is kept on disk.
 
 oro_init(Options) :-
     must_be(list, Options),
@@ -86,7 +91,9 @@ oro_init(Options) :-
     option(robot_id(RobotId), Options, ''),
     option(save_dir(SaveDir), Options, '.'),
     option(time_base(TimeBase), Options, 1000),
+    option(db(Db), Options, ''),
     must_be(positive_integer, TimeBase),
+    must_be(atom, Db),
     must_be(boolean, CommonSense),
     must_be(list(atom), Files),
     must_be(atom, RobotId),
@@ -99,6 +106,7 @@ oro_init(Options) :-
     set_setting(save_dir, SaveDir),
     set_setting(oro_memory:time_base, TimeBase),
     oro_memory_reset,
+    oro_store_detach,                       % the reset must not wipe it
     oro_store_reset,
     (   CommonSense == true
     ->  absolute_file_name(oro_ontologies('commonsense.ttl'), CS,
@@ -107,10 +115,24 @@ oro_init(Options) :-
     ;   true
     ),
     maplist(oro_load_ontology, Files),
+    (   Db == ''
+    ->  true
+    ;   oro_store_attach(Db)
+    ),
     oro_events_start,
     oro_events_reset,
     create_robot_model,
+    oro_memory_restore,
     oro_agents_start.
+
+%!  oro_close is det.
+%
+%   Close the database directory given to oro_init/1 (if any): wait for
+%   the change in progress, flush and close the journals.  Later
+%   changes are no longer kept on disk.  Called on a clean shutdown.
+
+oro_close :-
+    oro_store_detach.
 
 %!  oro_reset is det.
 %
@@ -333,6 +355,7 @@ oro_save(Model0, File) :-
     must_be(atom, File),
     save_path(File, Path),
     Graph = 'oro:save',
+    oro_scratch_graph(Graph),
     with_mutex(oro_write,
                setup_call_cleanup(
                    forall(oro_asserted(Model, S, P, O),

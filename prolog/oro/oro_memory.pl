@@ -4,7 +4,8 @@
             oro_memory_remember/3,      % +Model, +Profile, +Triples
             oro_memory_reset/0,
             oro_memory_deadlines/2,     % +Model, -Deadlines
-            oro_memory_sync/0
+            oro_memory_sync/0,
+            oro_memory_restore/0
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -14,6 +15,8 @@
 :- use_module(library(settings)).
 :- use_module(library(debug)).
 :- use_module(oro_store).
+:- use_module(oro_persist).
+:- use_module(library(rbtrees)).
 
 /** <module> Memory profiles: facts that fade
 
@@ -87,7 +90,8 @@ oro_memory_remember(Model, Profile, Triples) :-
                 Entries),
         (   Entries == []
         ->  true
-        ;   with_mutex(oro_memory,
+        ;   maplist(oro_persist_record, Entries),
+            with_mutex(oro_memory,
                        forall(member(E, Entries), set_deadline(E))),
             scheduler_send(schedule(Deadline, Model, Profile))
         )
@@ -115,6 +119,55 @@ oro_memory_deadlines(Model, Deadlines) :-
 oro_memory_reset :-
     with_mutex(oro_memory, retractall(deadline(_, _, _, _, _, _))),
     scheduler_call(reset).
+
+%!  oro_memory_restore is det.
+%
+%   After a database directory was attached (oro_persist): give every
+%   short-term and episodic fact found in the models its deadline
+%   again, as committed with the fact, and forget at once those whose
+%   deadline has passed.  A fact whose deadline record is missing gets
+%   a full lifetime from now.
+
+oro_memory_restore :-
+    oro_persist_records(Records),
+    rb_empty(Known0),
+    foldl(record_deadline, Records, Known0, Known),
+    get_time(NowS),
+    Now is ceiling(NowS * 1000),
+    findall(deadline(Model, Profile, S, P, O, D),
+            ( oro_model(Model),
+              member(Profile, [shortterm, episodic]),
+              oro_graph(Model, profile(Profile), Graph),
+              rdf(S, P, O, Graph),
+              (   rb_lookup(Model-Profile-S-P-O, D0, Known)
+              ->  D = D0
+              ;   oro_memory_lifetime(Profile, Lifetime),
+                  D is Now + Lifetime
+              )
+            ),
+            Entries),
+    with_mutex(oro_memory, forall(member(E, Entries), set_deadline(E))),
+    findall(D-(Model-Profile), member(deadline(Model, Profile, _, _, _, D), Entries),
+            Keys0),
+    sort(Keys0, Keys),
+    forall(member(D-(Model-Profile), Keys),
+           scheduler_send(schedule(D, Model, Profile))),
+    oro_memory_sync.
+
+record_deadline(deadline(Model, Profile, S, P, O, D), T0, T) :-
+    !,
+    rb_insert(T0, Model-Profile-S-P-O, D, T).
+record_deadline(_, T, T).
+
+%   The deadlines still pending are the records a compacted commit log
+%   keeps (oro_persist).
+
+:- multifile oro_persist:live_records/1.
+
+oro_persist:live_records(Records) :-
+    findall(deadline(Model, Profile, S, P, O, D),
+            deadline(Model, Profile, S, P, O, D),
+            Records).
 
 %!  oro_memory_sync is det.
 %

@@ -18,7 +18,10 @@
             oro_load_ontology/1,        % +File
             oro_ontology_graph/1,       % ?Graph
             oro_wipe_models/0,
-            oro_store_reset/0
+            oro_store_reset/0,
+            oro_store_attach/1,         % +Directory
+            oro_store_detach/0,
+            oro_scratch_graph/1         % +Graph
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -26,6 +29,7 @@
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(debug)).
+:- use_module(oro_persist).
 
 :- meta_predicate
     oro_store_write(+, 0).
@@ -207,8 +211,10 @@ rdf_graph_count(Graph, N) :-
 %!  oro_store_write(+Action, :Goal) is semidet.
 %
 %   Run Goal as one atomic change: under the `oro_write` mutex, in one
-%   rdf_transaction/2 whose id is oro(Action).  Writers are serialised;
-%   readers are not blocked.
+%   rdf_transaction/2 whose id is oro(Action) (log(oro(Seq, Action))
+%   when a database directory is attached, see oro_persist).  Writers
+%   are serialised; readers are not blocked.  When it returns, the
+%   change is durable if a database directory is attached.
 
 oro_store_write(Action, Goal) :-
     with_mutex(oro_write, store_write(Action, Goal)).
@@ -221,7 +227,7 @@ store_write(Action, Goal) :-
     flag(oro_schema_generation, Before, Before),
     setup_call_cleanup(
         true,
-        rdf_transaction(Goal, oro(Action)),
+        oro_persist_transaction(Action, Goal),
         (   flag(oro_schema_generation, After, After),
             After =\= Before
         ->  flag(oro_schema_generation, G, G+1)
@@ -391,6 +397,7 @@ oro_load_ontology(File) :-
                ( aggregate_all(count, ontology_graph(_), N0),
                  N is N0 + 1,
                  format(atom(Graph), 'oro:ontology#~d', [N]),
+                 oro_persist_exclude(Graph),
                  rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
                  assertz(ontology_graph(Graph)),
                  flag(oro_schema_generation, G, G+1)
@@ -446,3 +453,52 @@ oro_store_reset :-
                  retractall(ontology_graph(_)),
                  flag(oro_schema_generation, G, G+1)
                )).
+
+		 /*******************************
+		 *          DURABILITY          *
+		 *******************************/
+
+%!  oro_store_attach(+Directory) is det.
+%
+%   Journal the models in Directory (see oro_persist), restoring the
+%   models it holds first: each graph found there becomes the graph of
+%   its model again.  The ontology layer is not journaled.
+
+oro_store_attach(Dir) :-
+    must_be(atom, Dir),
+    with_mutex(oro_write,
+               ( oro_persist_attach(Dir),
+                 forall(ontology_graph(Graph), oro_persist_exclude(Graph)),
+                 forall(( rdf_graph(Graph),
+                          model_graph_name(Graph, Model)
+                        ),
+                        create_model(Model)),
+                 flag(oro_schema_generation, G, G+1)
+               )).
+
+%   model_graph_name(+Graph, -Model): Graph is named by oro_graph/3.
+
+model_graph_name(Graph, Model) :-
+    atom_concat('oro:', Rest, Graph),
+    sub_atom(Rest, Before, _, After, '#'),
+    sub_atom(Rest, _, After, 0, LayerName),
+    \+ sub_atom(LayerName, _, _, _, '#'),
+    layer_name(Layer, LayerName),
+    model_layer(Layer),
+    !,
+    sub_atom(Rest, 0, Before, _, Model).
+
+%!  oro_store_detach is det.
+%
+%   Stop journaling (nothing happens if no directory is attached).  The
+%   store keeps its content.
+
+oro_store_detach :-
+    with_mutex(oro_write, oro_persist_detach).
+
+%!  oro_scratch_graph(+Graph) is det.
+%
+%   Graph is a temporary graph (not journaled, not part of any model).
+
+oro_scratch_graph(Graph) :-
+    oro_persist_exclude(Graph).
