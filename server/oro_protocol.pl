@@ -68,6 +68,12 @@ caller must answer with an error and close it.  Long lines are decoded
 in 64 KiB chunks, so memory stays around the limit even for lines of
 many megabytes.
 
+The usual case takes fast paths that give what the general code gives
+(test/test_parse.pl compares them): a block without `\r` or NUL is cut
+with one split_string/4, a whole line found in one block (or a bare
+`#end#`) is returned at once, and a list of strings none of which needs
+escaping is encoded in one piece.
+
 **State between calls.**  A block may hold more than one request
 (pipelining), and two facts must survive from one call to the next
 without waiting for the peer: "a `\n` right now would end the previous
@@ -389,16 +395,45 @@ fill(source(In, Mode), Tokens) :-
     (   Codes == []
     ->  Tokens = []
     ;   block(Mode, Codes, Block),
-        (   (   sub_atom_icasechk(Block, _, "\n")
-            ;   sub_atom_icasechk(Block, _, "\r")
-            )
-        ->  findall(At-nl, sub_string(Block, At, 1, _, "\n"), Newlines),
-            findall(At-cr, sub_string(Block, At, 1, _, "\r"), Returns),
-            append(Newlines, Returns, Separators0),
-            keysort(Separators0, Separators),
-            block_tokens(Separators, Block, 0, Tokens)
-        ;   Tokens = [text(Block)]
+        (   \+ sub_atom_icasechk(Block, _, "\r"),  % the usual case
+            \+ sub_atom_icasechk(Block, _, "\u0000")
+        ->  split_string(Block, "\n", "", Lines),
+            lines_tokens(Lines, Tokens)
+        ;   general_block_tokens(Block, Tokens)
         )
+    ).
+
+%   lines_tokens(+Lines, -Tokens): the tokens of a block without `\r`
+%   split on `\n` into Lines: a `nl` between two lines, empty texts
+%   left out.  (The block has no NUL either, which split_string/4 would
+%   take for a separator.  sub_atom_icasechk/3 looks for one character
+%   several times faster than split_string/4.)  The tests check that it
+%   agrees with general_block_tokens/2.
+
+lines_tokens([Line|Lines], Tokens) :-
+    (   Line == ""
+    ->  Tokens = Tokens1
+    ;   Tokens = [text(Line)|Tokens1]
+    ),
+    (   Lines == []
+    ->  Tokens1 = []
+    ;   Tokens1 = [nl|Tokens2],
+        lines_tokens(Lines, Tokens2)
+    ).
+
+%   general_block_tokens(+Block, -Tokens): the tokens of any block,
+%   from the offsets of its `\n` and `\r`.
+
+general_block_tokens(Block, Tokens) :-
+    (   (   sub_atom_icasechk(Block, _, "\n")
+        ;   sub_atom_icasechk(Block, _, "\r")
+        )
+    ->  findall(At-nl, sub_string(Block, At, 1, _, "\n"), Newlines),
+        findall(At-cr, sub_string(Block, At, 1, _, "\r"), Returns),
+        append(Newlines, Returns, Separators0),
+        keysort(Separators0, Separators),
+        block_tokens(Separators, Block, 0, Tokens)
+    ;   Tokens = [text(Block)]
     ).
 
 block(bytes, Codes, Block) :-
@@ -486,17 +521,64 @@ skip_line(In, Max, Skip0, Tokens0, Term, Used, Skip, Tokens) :-
 %   is `false` once the line is known to be invalid UTF-8 (or its
 %   content is not wanted); then only Tail is kept.
 
-line(eof, _, _, _, Used, _, _, _, "", eof, Used, none, []).
-line(nl, _, _, Raw, Used0, Chunks, Valid, Tokens, Line, nl, Used, none, Tokens) :-
+line(Token, In, Max, Raw, Used0, Chunks, Valid, Tokens0,
+     Line, Term, Used, Skip, Tokens) :-
+    (   Raw = raw([], 0, ""),
+        Chunks == [],
+        Valid == true,
+        line_fast(Token, Max, Used0, Tokens0, Line1, Term1, Used1, Skip1,
+                  Tokens1)
+    ->  Line = Line1,
+        Term = Term1,
+        Used = Used1,
+        Skip = Skip1,
+        Tokens = Tokens1
+    ;   line_(Token, In, Max, Raw, Used0, Chunks, Valid, Tokens0,
+              Line, Term, Used, Skip, Tokens)
+    ).
+
+%   line_fast(+Token, +Max, +Used0, +Tokens0,
+%             -Line, -Term, -Used, -Skip, -Tokens) is semidet.
+%
+%   The usual cases, at the start of a line, decided from Token and the
+%   tokens already read (it never reads): a bare `#end#` and a short
+%   whole line (text followed by its line end) without `#end#`.  It
+%   gives what line_/13 gives and fails for everything else (a text
+%   with `#end#` in any case, a line end not read yet, too large or
+%   invalid UTF-8).
+
+line_fast(text(Part), Max, Used0, Tokens0, Line, Term, Used, Skip, Tokens) :-
+    (   Part == "#end#"
+    ->  Used is Used0 + 5,
+        Used =< Max,
+        Line = "",
+        Term = end,
+        Skip = eol,
+        Tokens = Tokens0
+    ;   Tokens0 = [End|Tokens],
+        line_end_skip(End, Skip),
+        \+ sub_atom_icasechk(Part, _, "#end#"),
+        string_length(Part, Len),
+        Used0 + Len =< Max,
+        utf8_decode(Part, Line),
+        Term = nl,
+        Used is Used0 + Len + 1
+    ).
+
+line_end_skip(nl, none).
+line_end_skip(cr, lf).
+
+line_(eof, _, _, _, Used, _, _, _, "", eof, Used, none, []).
+line_(nl, _, _, Raw, Used0, Chunks, Valid, Tokens, Line, nl, Used, none, Tokens) :-
     Used is Used0 + 1,
     raw_string(Raw, Bytes),
     line_text(Valid, Bytes, Chunks, Line).
-line(cr, _, _, Raw, Used0, Chunks, Valid, Tokens, Line, nl, Used, lf, Tokens) :-
+line_(cr, _, _, Raw, Used0, Chunks, Valid, Tokens, Line, nl, Used, lf, Tokens) :-
     Used is Used0 + 1,
     raw_string(Raw, Bytes),
     line_text(Valid, Bytes, Chunks, Line).
-line(text(Part), In, Max, raw(Parts0, Len0, Tail0), Used0, Chunks0, Valid0,
-     Tokens0, Line, Term, Used, Skip, Tokens) :-
+line_(text(Part), In, Max, raw(Parts0, Len0, Tail0), Used0, Chunks0, Valid0,
+      Tokens0, Line, Term, Used, Skip, Tokens) :-
     string_length(Part, PartLen),
     string_concat(Tail0, Part, Window),
     (   end_marker(Window, Offset)
@@ -878,6 +960,13 @@ value(int(N), [N|T], T) :-
 value(float(X), [Text|T], T) :-
     number(X),
     float_text(X, Text).
+value(list(Values), ["[\"", Joined, "\"]"|T], T) :-
+    Values = [_|_],
+    plain_elements(Values, Texts),          % the usual case: strings
+    atomic_list_concat(Texts, ",", All),
+    plain_string(All),                      % one scan for the list
+    !,
+    atomic_list_concat(Texts, "\",\"", Joined).
 value(list(Values), ["["|T0], T) :-
     is_list(Values),
     elements(Values, T0, ["]"|T]).
@@ -925,6 +1014,28 @@ element(E, T0, T) :-
     ;   E \= void,
         value(E, T0, T)
     ).
+
+%   plain_elements(+Values, -Texts) is semidet.
+%
+%   Values are list elements that are all encoded as strings (string(T)
+%   with T an atom or a string, a string, an atom but `null`); Texts are
+%   their texts.  If none of them needs escaping (plain_string/1 on all
+%   of them at once), the list is `["` + their join by `","` + `"]`.
+
+plain_elements([], []).
+plain_elements([Value|Values], [Text|Texts]) :-
+    (   string(Value)
+    ->  Text = Value
+    ;   atom(Value)
+    ->  Value \== null,
+        Text = Value
+    ;   Value = string(Text),
+        (   atom(Text)
+        ->  true
+        ;   string(Text)
+        )
+    ),
+    plain_elements(Values, Texts).
 
 text_string(Text, String) :-
     (   string(Text)

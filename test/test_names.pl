@@ -13,6 +13,7 @@
 */
 
 :- use_module(library(semweb/rdf_db)).
+:- use_module(library(oro/oro_names)).
 
 
                  /*******************************
@@ -56,8 +57,70 @@ test(not_text, error(type_error(text, 42))) :-
     oro_name_iri(42, _).
 test(unbound, error(instantiation_error)) :-
     oro_name_iri(_, _).
+test(code_list, true(IRI == 'http://www.w3.org/1999/02/22-rdf-syntax-ns#type')) :-
+    oro_name_iri(`rdf:type`, IRI).
+test(nul_in_name, true(IRI == 'http://kb.openrobots.org#a\u0000b')) :-
+    oro_name_iri("a\u0000b", IRI).
+test(nul_before_colon, true(IRI == 'a\u0000:b')) :-
+    oro_name_iri("a\u0000:b", IRI).
 
 :- end_tests(name_expansion).
+
+
+/*  Names with a prefix, a `#` or in brackets are expanded through a
+    bounded cache (oro_names:name_expansion/2).  A cached expansion must
+    be the one computed afresh, for atoms and strings, and the cache
+    must stay within its bound.
+*/
+
+:- begin_tests(name_cache).
+
+cache_corpus(Name) :-
+    member(Name0, [ "rdf:type", "owl:Thing", "oro:a:b", "foo:bar", "x:",
+                    ":x", "a#b", "<http://x.org/a#b>", "<>", "<a", "a<b",
+                    "a>b", "oro:", "<oro:a>", "\u00e9:x", "xsd:int#"
+                  ]),
+    (   Name = Name0
+    ;   atom_string(Name, Name0)
+    ).
+
+test(cached_equals_fresh, Bad == []) :-
+    findall(Name-IRI1-IRI2-Fresh,
+            ( cache_corpus(Name),
+              oro_name_iri(Name, IRI1),         % fills the cache
+              oro_name_iri(Name, IRI2),         % from the cache
+              oro_names:expand_name(Name, Fresh),
+              \+ ( IRI1 == Fresh, IRI2 == Fresh )
+            ),
+            Bad).
+test(atom_and_string_agree, Bad == []) :-
+    findall(Name,
+            ( cache_corpus(Name),
+              string(Name),
+              atom_string(Atom, Name),
+              oro_name_iri(Name, IRI1),
+              oro_name_iri(Atom, IRI2),
+              IRI1 \== IRI2
+            ),
+            Bad).
+test(bounded, true(Count =< Max)) :-
+    oro_names:name_cache_size(Max),
+    Top is 2 * Max + 10,
+    forall(between(1, Top, I),
+           ( format(string(Name), "p~d:x", [I]),
+             oro_name_iri(Name, _)
+           )),
+    aggregate_all(count, oro_names:name_expansion(_, _), Count).
+test(after_flush, true(IRI == 'http://www.w3.org/1999/02/22-rdf-syntax-ns#type')) :-
+    oro_names:name_cache_size(Max),
+    Top is Max + 1,
+    forall(between(1, Top, I),
+           ( format(string(Name), "q~d:x", [I]),
+             oro_name_iri(Name, _)
+           )),
+    oro_name_iri("rdf:type", IRI).
+
+:- end_tests(name_cache).
 
 
                  /*******************************
@@ -96,6 +159,52 @@ test(resource_term_text_default, true(Text == 'Monkey')) :-
     oro_term_text('http://kb.openrobots.org#Monkey', Text).
 
 :- end_tests(name_contraction).
+
+
+                 /*******************************
+                 *          LOCAL NAMES         *
+                 *******************************/
+
+:- begin_tests(local_name).
+
+test(hash, true(L == obj1)) :-
+    oro_local_name('http://kb.openrobots.org#obj1', L).
+test(slash, true(L == 'Drink')) :-
+    oro_local_name('http://sw.opencyc.org/concept/Drink', L).
+test(hash_before_slash, true(L == 'b/c')) :-
+    oro_local_name('http://x.org/a#b/c', L).
+test(last_hash, true(L == c)) :-
+    oro_local_name('a#b#c', L).
+test(trailing_hash, true(L == '')) :-
+    oro_local_name('http://x.org/a#', L).
+test(trailing_slash, true(L == '')) :-
+    oro_local_name('http://x.org/a/', L).
+test(no_separator, true(L == plain)) :-
+    oro_local_name(plain, L).
+test(agrees_with_split, Bad == []) :-
+    findall(IRI-L1-L2,
+            ( member(IRI, [ 'http://kb.openrobots.org#obj1', 'a/b/c/d', '#',
+                            '/', '//', '##a', 'a#', 'a#b/', 'x/y#z#w/v',
+                            'http://www.w3.org/2002/07/owl#Thing', '',
+                            'caf\u00e9#th\u00e9', 'a\u0000#b'
+                          ]),
+              oro_local_name(IRI, L1),
+              split_local_name(IRI, L2),
+              L1 \== L2
+            ),
+            Bad).
+
+split_local_name(IRI, Local) :-
+    (   atomic_list_concat(Parts, '#', IRI),
+        Parts = [_, _|_]
+    ->  last(Parts, Local)
+    ;   atomic_list_concat(Parts, '/', IRI),
+        Parts = [_, _|_]
+    ->  last(Parts, Local)
+    ;   Local = IRI
+    ).
+
+:- end_tests(local_name).
 
 
                  /*******************************

@@ -493,3 +493,325 @@ test(statement_not_text, error(type_error(text, 42))) :-
     oro_parse_statement(42, _).
 
 :- end_tests(errors).
+
+
+                 /*******************************
+                 *   FAST PATHS AGREE (PARSE)   *
+                 *******************************/
+
+/*  The parser decides plain texts with a few split_string/4 calls and
+    everything else code by code (see the module doc of oro_parse).
+    These tests run both paths over corpora of tricky inputs -- every
+    combination of awkward tokens, and random texts over an alphabet of
+    the characters that matter -- and require the same result or the
+    same error.  The general paths are internal predicates, called
+    module-qualified.
+*/
+
+%   outcome(:Goal, ?Result, -Outcome): Outcome is ok(Result), failed,
+%   or error(Formal) for the exception Goal raised.
+
+:- meta_predicate outcome(0, ?, -).
+
+outcome(Goal, Result, Outcome) :-
+    catch(( call(Goal)
+          ->  Outcome = ok(Result)
+          ;   Outcome = failed
+          ),
+          error(Formal, _),
+          Outcome = error(Formal)).
+
+resource_tokens([ "a", "?x", "?", "rdf:type", "oro:Monkey", "foo:bar",
+                  "<http://x.org/a#b>", "<>", "<a", "a>", "http://x.org/a#b",
+                  "a#b", "a<b", "_a", "1a", "caf\u00e9", "\u00e9t\u00e9",
+                  "true", "12", "a^^b", "a@b", "a^b", "x:", ":x", "a'b"
+                ]).
+
+object_tokens(Tokens) :-
+    resource_tokens(Resources),
+    append(Resources,
+           [ "false", "True", "-3", "+007", "1.5", ".5", "1.", "1e5", "1E-5",
+             "-3.0e2", "1d", "NaN", "+", "-", ".", "\"q\"", "'q'", "\"\"",
+             "\"x\"@en", "'x'@en-GB", "\"x\"@", "\"x\"@1", "x@en",
+             "5^^xsd:int", "x^^xsd:int", "\"5\"^^xsd:int", "5^^xsd:foo",
+             "5^^", "^^xsd:int", "5^^<http://x.org/t>", "5^^celsius",
+             "\"it's\"^^xsd:string", "true^^xsd:boolean", "\u00e9^^xsd:int",
+             "[a]", "{a}", "a\\b", "\"a\\nb\"", "\"\\u00e9\"", "\"\\u12\""
+           ],
+           Tokens).
+
+statement_corpus(Text) :-
+    resource_tokens(Resources),
+    object_tokens(Objects),
+    member(S, ["s", "?s", "rdf:type", "?", "1a", "a\"b"]),
+    member(P, Resources),
+    member(O, Objects),
+    atomic_list_concat([S, P, O], ' ', Text0),
+    (   Text = Text0
+    ;   P == "a",
+        member(Pre-Post, [" "-"", ""-" ", "\t"-"", ""-"\r\n"]),
+        atomic_list_concat([Pre, Text0, Post], Text)
+    ).
+statement_corpus(Text) :-
+    member(Text, [ "", " ", "a", "a b", "a b c d", "a  b c", "a b  c",
+                   "  a  b c ", "a\tb c", "a b\tc", 'a b c', "a b c,d",
+                   "\"a b\" p o", "s p \"a b c\"", "s p [a, b]", "s p {a b}",
+                   "s p 'x y'@fr", "a\u0000 b c", "a b c\u0000"
+                 ]).
+
+%   random_text(+Alphabet, +MaxLength, -Text)
+
+random_text(Alphabet, MaxLength, Text) :-
+    random_between(0, MaxLength, Length),
+    length(Codes, Length),
+    string_codes(Alphabet, Pool),
+    maplist(random_code(Pool), Codes),
+    string_codes(Text, Codes).
+
+random_code(Pool, Code) :-
+    random_member(Code, Pool).
+
+random_corpus(Alphabet, MaxLength, N, Texts) :-
+    set_random(seed(1234)),
+    length(Texts, N),
+    maplist(random_text(Alphabet, MaxLength), Texts).
+
+statement_alphabet("ab1 ?:#<>^@\"'\\[]{},.\t-e\u00e9").
+
+:- begin_tests(parse_fast_paths).
+
+test(statement_corpus, Bad == []) :-
+    findall(Text-Fast-General,
+            ( statement_corpus(Text),
+              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(statement_corpus_size, true(N > 3000)) :-
+    aggregate_all(count, statement_corpus(_), N).
+test(statement_fast_path_taken, true) :-
+    oro_parse:local_statement("obj1 isOn table", _),
+    oro_parse:plain_statement_tokens("obj1 rdf:type Cup", _, _, _),
+    \+ oro_parse:local_statement("obj1 rdf:type Cup", _),
+    \+ oro_parse:plain_statement_tokens("obj1 p \"a\"", _, _, _),
+    \+ oro_parse:plain_statement_tokens(" obj1 p o", _, _, _).
+test(random_statements, Bad == []) :-
+    statement_alphabet(Alphabet),
+    random_corpus(Alphabet, 14, 3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(random_plain_statements, Bad == []) :-
+    random_corpus("aab b1 ?:#@^\u00e9.", 12, 3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(random_plain_statements_hit_fast_paths, true(Enough == true)) :-
+    random_corpus("aab b1 ?:#@^\u00e9.", 12, 3000, Texts),
+    aggregate_all(count,
+                  ( member(Text, Texts),
+                    local(Text)
+                  ),
+                  Local),
+    aggregate_all(count,
+                  ( member(Text, Texts),
+                    \+ local(Text),
+                    oro_parse:plain_statement_tokens(Text, _, _, _)
+                  ),
+                  Plain),
+    (   Local >= 5,
+        Plain >= 50
+    ->  Enough = true
+    ;   Enough = Local-Plain
+    ).
+test(variables_shared_the_same, true(Ts == [rdf(X, P, O), rdf(X, P, O)])) :-
+    oro_statements(["?x p ?o", "?x p ?o"], Ts, [x=X, o=O]),
+    oro_parse:parse_statement("a p b", rdf(_, P, _)).
+test(collections_random, Bad == []) :-
+    random_corpus("ab ,\"'\\[]{}\t\u0000n", 16, 3000, Inners),
+    findall(Text-Fast-General,
+            ( member(Inner, Inners),
+              atomics_to_string(["[", Inner, "]"], Text),
+              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
+              outcome(general_collection(Text, E2), E2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(set_keeps_first_occurrences, true(E == ["b", "a", "c"])) :-
+    oro_parse_collection(set, "[b, a, b, c, a]", E).
+test(set_without_duplicates, true(E == ["c", "a", "b"])) :-
+    oro_parse_collection(set, "[c, a, b]", E).
+test(clean_value_random, Bad == []) :-
+    random_corpus(" a\"'\\unr0\t\u0001", 10, 3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_clean_value(Text, S1), S1, Fast),
+              outcome(oro_parse:general_clean_value(Text, S2), S2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(tokenize_random, Bad == []) :-
+    random_corpus("a ,\"'\\[]{}\u0000", 12, 3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              member(D, [0',, 0'\s]),
+              outcome(oro_tokenize(Text, D, T1), T1, Fast),
+              outcome(oro_parse:general_tokenize(Text, D, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(name_start, Bad == []) :-
+    findall(C,
+            ( between(0, 0x3000, C),
+              (   oro_parse:name_start(C)
+              ->  Fast = true
+              ;   Fast = false
+              ),
+              (   code_type(C, alpha),
+                  \+ code_type(C, digit),
+                  C \== 0'_
+              ->  General = true
+              ;   General = false
+              ),
+              Fast \== General
+            ),
+            Bad).
+test(nul_splits_or_is_checked, true) :-
+    \+ oro_parse:plain_text("a\u0000b"),
+    \+ oro_parse:untracked("a\u0000b").
+
+:- end_tests(parse_fast_paths).
+
+local(Text) :-
+    catch(oro_parse:local_statement(Text, _), error(_, _), true).
+
+%   general_collection(+Text, -Elements): oro_parse_collection/3 (list)
+%   the general way only.
+
+general_collection(Text, Elements) :-
+    (   oro_parse:null_text(Text)
+    ->  Elements = []
+    ;   oro_parse:framed(Text, 0'[, 0'], Inner)
+    ->  (   Inner == ""
+        ->  Elements = []
+        ;   oro_parse:general_tokenize(Inner, 0',, Tokens),
+            maplist(oro_parse:general_clean_value, Tokens, Elements)
+        )
+    ;   throw(error(type_error(oro_collection, Text), _))
+    ).
+
+
+                 /*******************************
+                 *  FAST PATHS AGREE (PROTOCOL) *
+                 *******************************/
+
+/*  The same for the fast paths of server/oro_protocol.pl: a block of
+    bytes without `\r` cut with split_string/4, a whole short line or a
+    bare `#end#` decided at once, a list of plain strings encoded in one
+    piece.  Each must give what the general code gives.
+*/
+
+:- use_module(library(memfile)).
+:- use_module('../server/oro_protocol').
+
+:- begin_tests(protocol_fast_paths).
+
+test(block_tokens_random, Bad == []) :-
+    random_corpus("ab#end\n \u00c3\u00a9", 24, 3000, Blocks),
+    findall(Block-Fast-General,
+            ( member(Block, Blocks),
+              Block \== "",                     % fill/2 has no empty block
+              split_string(Block, "\n", "", Lines),
+              oro_protocol:lines_tokens(Lines, Fast),
+              oro_protocol:general_block_tokens(Block, General),
+              Fast \== General
+            ),
+            Bad).
+test(line_fast_agrees, Bad-Taken == []-true) :-
+    setup_call_cleanup(
+        empty_octet_stream(MF, In),
+        findall(Case-Fast-General,
+                ( line_case(Case),
+                  Case = case(Token, Max, Used0, Tokens0),
+                  oro_protocol:line_fast(Token, Max, Used0, Tokens0,
+                                         L1, T1, U1, S1, R1),
+                  Fast = r(L1, T1, U1, S1, R1),
+                  oro_protocol:line_(Token, source(In, bytes), Max,
+                                     raw([], 0, ""), Used0, [], true, Tokens0,
+                                     L2, T2, U2, S2, R2),
+                  General = r(L2, T2, U2, S2, R2),
+                  Fast \== General
+                ),
+                Bad),
+        ( close(In), free_memory_file(MF) )),
+    aggregate_all(count,
+                  ( line_case(case(Token, Max, Used0, Tokens0)),
+                    oro_protocol:line_fast(Token, Max, Used0, Tokens0,
+                                           _, _, _, _, _)
+                  ),
+                  N),
+    (   N > 50
+    ->  Taken = true
+    ;   Taken = N
+    ).
+test(list_encoding_random, Bad == []) :-
+    set_random(seed(99)),
+    numlist(1, 2000, Is),
+    findall(List-Fast-General,
+            ( member(_, Is),
+              random_between(0, 4, Length),
+              length(List, Length),
+              maplist(random_element, List),
+              outcome(oro_encode_value(list(List), S1), S1, Fast),
+              outcome(general_list(List, S2), S2, General),
+              Fast \== General
+            ),
+            Bad).
+test(plain_list_one_piece, true(S == "[\"a\",\"b c\",\"d\"]")) :-
+    oro_encode_value(list([string(a), "b c", d]), S).
+test(null_atom_not_a_string, true(S == "[\"a\",null]")) :-
+    oro_encode_value(list([a, null]), S).
+
+:- end_tests(protocol_fast_paths).
+
+empty_octet_stream(MF, In) :-
+    new_memory_file(MF),
+    open_memory_file(MF, read, In, [encoding(octet)]).
+
+%   line_case(-Case): a token at the start of a line, what is known to
+%   follow it, and the byte budget.
+
+line_case(case(text(Part), Max, Used0, Tokens0)) :-
+    member(Part, [ "#end#", "#END#", "a", "hello", "a#end#", "#end#b",
+                   "[a b c]#end#", "x#eNd#y", "abcdef", "\u00c3\u00a9t\u00c3\u00a9",
+                   "\u00e9", "\u00c3", "\u00ed\u00a0\u0080", "##end#", "#end"
+                 ]),
+    member(Max, [3, 4, 5, 6, 8, 1000]),
+    member(Used0, [0, 2]),
+    member(Tokens0, [[nl], [cr], [nl, text("x")], [text("x")], []]).
+
+random_element(E) :-
+    random_member(E, [ "a", "", "b c", "a\"b", "a\\b", "a\nb", "a\u0001",
+                       "a\u0000b", "\u00e9", x, null, true, 12, 1.5,
+                       string("s"), string(t), string("q\"u"), string(`co`),
+                       list(["a"]), list([]), bool(true), raw("{}"), void,
+                       map(["k"-"v"]), f(x), string(12)
+                     ]).
+
+%   general_list(+Elements, -String): a list encoded element by element.
+
+general_list(Elements, String) :-
+    (   oro_protocol:elements(Elements, Parts, [])
+    ->  append(["["|Parts], ["]"], All),
+        atomics_to_string(All, String)
+    ;   type_error(oro_value, list(Elements))
+    ).

@@ -29,6 +29,12 @@ expanded or contracted here.
     dropped (`baboon`), other known namespaces become `prefix:local`
     (`owl:Thing`), anything else stays a full IRI; blank nodes become
     `anonymousNode_<id>`.
+
+Expansion is on the path of every statement: a plain name costs one
+scan and one atom_concat/3; names with a prefix or in brackets go
+through a small cache owned by this module (name_expansion/2, bounded,
+emptied when full; an expansion depends on the text only, so entries
+never go stale).
 */
 
 :- rdf_register_prefix(oro, 'http://kb.openrobots.org#').
@@ -66,34 +72,71 @@ oro_prefix(dbp,  'https://dbpedia.org/property/').
 
 oro_name_iri(Text, IRI) :-
     must_be(text, Text),
-    (   split_string(Text, ":#<", "", [_])      % a plain name
+    (   split_string(Text, ":#<", "", [_])      % a plain name: one scan
     ->  oro_default_namespace(NS),
         atom_concat(NS, Text, IRI)
-    ;   atom_string(Atom, Text),
-        expand_name(Atom, IRI)
+    ;   (   string(Text)
+        ;   atom(Text)
+        )
+    ->  cached_expansion(Text, IRI)
+    ;   text_to_string(Text, String),           % a code or char list
+        cached_expansion(String, IRI)
     ).
 
-expand_name(Atom, IRI) :-
-    sub_atom(Atom, 0, 1, _, <),
-    sub_atom(Atom, _, 1, 0, >),
-    !,
-    sub_atom(Atom, 1, _, 1, IRI).
-expand_name(Atom, IRI) :-
-    sub_atom(Atom, Before, _, After, :),
-    !,
-    sub_atom(Atom, 0, Before, _, Prefix),
-    (   oro_prefix(Prefix, NS)
-    ->  sub_atom(Atom, _, After, 0, Local),
-        atom_concat(NS, Local, IRI)
-    ;   IRI = Atom
+%   cached_expansion(+Text, -IRI): expand_name/2 through a cache.
+%
+%   Names with a prefix or in brackets are mostly vocabulary
+%   (`rdf:type`, `owl:Thing`) and come back in every batch; expanding
+%   one takes several scans, finding it in the cache (a dynamic
+%   predicate, whose first argument SWI-Prolog indexes for strings and
+%   atoms alike) about a twentieth of that.  The cache is owned by this
+%   module and bounded: once it holds name_cache_size/1 names it is
+%   emptied and refilled.  The expansion of a text depends on nothing
+%   but the text (the prefixes are fixed), so an entry never goes
+%   stale.
+
+:- dynamic
+    name_expansion/2.                   % Text, IRI
+
+name_cache_size(4096).
+
+cached_expansion(Text, IRI) :-
+    (   name_expansion(Text, IRI0)
+    ->  IRI = IRI0
+    ;   expand_name(Text, IRI),
+        remember_expansion(Text, IRI)
     ).
-expand_name(Atom, IRI) :-
-    sub_atom(Atom, _, _, _, #),
-    !,
-    IRI = Atom.
-expand_name(Atom, IRI) :-
-    oro_default_namespace(NS),
-    atom_concat(NS, Atom, IRI).
+
+remember_expansion(Text, IRI) :-
+    flag(oro_name_cache_entries, N, N+1),
+    name_cache_size(Max),
+    (   N >= Max
+    ->  retractall(name_expansion(_, _)),
+        flag(oro_name_cache_entries, _, 1)
+    ;   true
+    ),
+    assertz(name_expansion(Text, IRI)).
+
+%   expand_name(+Text, -IRI): Text is an atom or a string; every test
+%   works on either, so no atom is made for the text itself.
+
+expand_name(Text, IRI) :-
+    (   string_code(1, Text, 0'<),
+        string_length(Text, Len),
+        string_code(Len, Text, 0'>)
+    ->  sub_atom(Text, 1, _, 1, IRI)
+    ;   sub_string(Text, Before, _, After, ":")  % the first colon
+    ->  sub_atom(Text, 0, Before, _, Prefix),
+        (   oro_prefix(Prefix, NS)
+        ->  sub_atom(Text, _, After, 0, Local),
+            atom_concat(NS, Local, IRI)
+        ;   atom_string(IRI, Text)
+        )
+    ;   sub_string(Text, _, _, _, "#")
+    ->  atom_string(IRI, Text)
+    ;   oro_default_namespace(NS),
+        atom_concat(NS, Text, IRI)
+    ).
 
 %!  oro_iri_name(+IRI, -Text) is det.
 %
@@ -133,11 +176,18 @@ oro_local_name(IRI, Local) :-
     ;   Local = IRI
     ).
 
+%   after_last(+Atom, +Sep, -After): After is what follows the last
+%   Sep (one character) in Atom.  sub_atom_icasechk/3 finds the first
+%   Sep in C without leaving a choice point; IRIs have few separators.
+
 after_last(Atom, Sep, After) :-
-    sub_atom(Atom, _, 1, A, Sep),
-    sub_atom(Atom, _, A, 0, After),
-    \+ sub_atom(After, _, _, _, Sep),
-    !.
+    sub_atom_icasechk(Atom, Before, Sep),
+    Start is Before + 1,
+    sub_atom(Atom, Start, _, 0, Rest),
+    (   after_last(Rest, Sep, After0)
+    ->  After = After0
+    ;   After = Rest
+    ).
 
 %!  oro_literal_lexical(+Literal, -Lexical) is det.
 %
@@ -230,7 +280,7 @@ oro_resource(Prefix:Local, IRI) :-
 oro_resource(Name, IRI) :-
     atom(Name),
     !,
-    (   sub_atom(Name, _, _, _, :)
+    (   sub_atom_icasechk(Name, _, :)
     ->  IRI = Name
     ;   expand_name(Name, IRI)
     ).

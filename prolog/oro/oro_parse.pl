@@ -52,6 +52,18 @@ Errors are ISO-shaped, `error(Formal, _)`:
   | `syntax_error(oro_lexical_form(Lex, Type))`   | a lexical form its datatype rejects |
 
 Texts inside error terms are strings.
+
+## Speed
+
+Parsing is on the path of every request, so the common case is kept to
+a few C-level scans per text.  A text with none of the characters the
+tokenizer and `cleanValue` track (quotes, brackets, braces, backslash,
+control characters; see plain_text/1) is split with split_string/4
+directly: a set of such statements, an unquoted statement and the
+names in it take this *fast path*.  Anything else takes the general,
+code-by-code path.  Both give the same results (test/test_parse.pl runs
+both over a corpus of tricky inputs); the fast path only skips work
+that provably does nothing on plain text.
 */
 
                  /*******************************
@@ -86,12 +98,76 @@ delimiter_code(Delimiter, Code) :-
     ).
 
 tokenize(Text, Delimiter, Tokens) :-
-    (   split_string(Text, "[]{}\"'\\", "", [_])
+    (   untracked(Text)
     ->  char_code(Sep, Delimiter),
         split_string(Text, Sep, "", Tokens)     % nothing to track
-    ;   string_codes(Text, Codes),
-        tokens(Codes, Delimiter, -1, Tokens)
+    ;   general_tokenize(Text, Delimiter, Tokens)
     ).
+
+%   general_tokenize(+Text, +Delimiter, -Tokens): tokenize/3 code by
+%   code, tracking depths and quotes.
+
+general_tokenize(Text, Delimiter, Tokens) :-
+    string_codes(Text, Codes),
+    tokens(Codes, Delimiter, -1, Tokens).
+
+%   untracked(+Text): Text has none of the characters the tokenizer
+%   tracks, and no NUL.
+
+untracked(Text) :-
+    one_part(Text, "[]{}\"'\\").
+
+%!  plain_text(+Text) is semidet.
+%
+%   Text has none of the characters the tokenizer, cleanValue or the
+%   statement parser treat specially: no quote, bracket, brace or
+%   backslash and no control character (codes 0-31).  On such a text
+%   tokenizing is splitting, Java's trim() only removes spaces and
+%   unescaping changes nothing.  One C-level scan.
+
+plain_text(Text) :-
+    plain_specials(Specials),
+    one_part(Text, Specials).
+
+%   plain_specials(-Chars): `[]{}"'\` and the codes 1-31, as a string.
+%   local_specials(-Chars): those and `:#<^@`.  (Both computed at
+%   compile time.  NUL cannot be in such a set: split_string/4 reads its
+%   separators up to the first NUL.)
+
+term_expansion(plain_specials(generated), plain_specials(Specials)) :-
+    plain_special_codes(Codes),
+    string_codes(Specials, Codes).
+term_expansion(local_specials(generated), local_specials(Specials)) :-
+    plain_special_codes(Codes),
+    append(Codes, `:#<^@`, Local),
+    string_codes(Specials, Local).
+
+plain_special_codes([0'[, 0'], 0'{, 0'}, 0'", 0'\', 0'\\|Controls]) :-
+    numlist(1, 31, Controls).
+
+plain_specials(generated).
+local_specials(generated).
+
+%   one_part(+Text, +Separators): Text has none of Separators and no
+%   NUL.  SWI-Prolog 9.0.4's split_string/4 takes NUL for a separator
+%   inside the text and for padding at its ends, so a text with a NUL
+%   comes back in several parts or shorter.  Where split_string/4 does
+%   not do that, no_nul/1 looks for one.
+
+one_part(Text, Separators) :-
+    split_string(Text, Separators, "", [Part]),
+    string_length(Part, Length),
+    string_length(Text, Length),
+    no_nul(Text).
+
+:- if(( split_string("a\u0000b", "", "", [_, _]),
+        split_string("\u0000a\u0000", "", "", ["a"])
+      )).
+no_nul(_).
+:- else.
+no_nul(Text) :-
+    \+ sub_atom_icasechk(Text, _, "\u0000").
+:- endif.
 
 tokens(Codes, Delimiter, Prev, [Token|Tokens]) :-
     token(Codes, Delimiter, Prev, 0, 0, 0, 0, TokenCodes, Rest),
@@ -154,6 +230,14 @@ oro_clean_value(Text, String) :-
     clean_value(Text, String).
 
 clean_value(Text, String) :-
+    (   plain_text(Text)                    % only spaces to trim
+    ->  split_string(Text, "", " ", [String])
+    ;   general_clean_value(Text, String)
+    ).
+
+%   general_clean_value(+Text, -String): clean_value/2 the general way.
+
+general_clean_value(Text, String) :-
     trim(Text, Trimmed),
     (   quoted(Trimmed, _)
     ->  sub_string(Trimmed, 1, _, 1, Inner)
@@ -300,8 +384,18 @@ oro_parse_collection(Kind, Text, Elements) :-
     must_be(text, Text),
     collection_elements(Text, Elements0),
     (   Kind == set
-    ->  list_to_set(Elements0, Elements)
+    ->  set_elements(Elements0, Elements)
     ;   Elements = Elements0
+    ).
+
+%   set_elements(+List, -Set): List less its duplicates, the first
+%   occurrence of each kept.  A batch rarely has any: one sort tells.
+
+set_elements(List, Set) :-
+    sort(List, Sorted),
+    (   same_length(List, Sorted)
+    ->  Set = List
+    ;   list_to_set(List, Set)
     ).
 
 collection_kind(set).
@@ -313,11 +407,19 @@ collection_elements(Text, Elements) :-
     ;   framed(Text, 0'[, 0'], Inner)
     ->  (   Inner == ""
         ->  Elements = []
-        ;   tokenize(Inner, 0',, Tokens),
-            maplist(clean_value, Tokens, Elements)
+        ;   plain_text(Inner)               % split, trim: one C call
+        ->  split_string(Inner, ",", " ", Elements)
+        ;   general_elements(Inner, Elements)
         )
     ;   throw(error(type_error(oro_collection, Text), _))
     ).
+
+%   general_elements(+Inner, -Elements): the elements of the non-empty
+%   inside of a collection, the general way.
+
+general_elements(Inner, Elements) :-
+    tokenize(Inner, 0',, Tokens),
+    maplist(clean_value, Tokens, Elements).
 
 null_text(Text) :-
     string_length(Text, Len),
@@ -429,7 +531,88 @@ oro_is_partial(Triple) :-
 is_var_term(Term) :-
     subsumes_term(var(_), Term).
 
-parse_statement(Text, rdf(S, P, O)) :-
+%   parse_statement(+Text, -Triple).  Two fast paths before the
+%   general one:
+%
+%     - local_statement/2: a plain text (see plain_text/1) without any
+%       of `:#<^@`, made of three non-empty tokens separated by single
+%       spaces with no space around.  Its subject and predicate are
+%       names of the default namespace or variables, and so is its
+%       object unless it does not start with a letter or is a boolean.
+%       Two splits find all that.
+%     - plain_statement_tokens/4: a plain text of three non-empty tokens
+%       separated by single spaces, with no space around: the text is
+%       the statement already trimmed and tokenized.
+%
+%   Anything else (two spaces, a tab, quotes...) goes through
+%   general_statement/2, which also raises the errors.
+
+parse_statement(Text, Triple) :-
+    (   local_statement(Text, Triple0)
+    ->  Triple = Triple0
+    ;   plain_statement_tokens(Text, ST, PT, OT)
+    ->  tokens_triple(ST, PT, OT, Text, Triple)
+    ;   general_statement(Text, Triple)
+    ).
+
+local_statement(Text, rdf(S, P, O)) :-
+    local_specials(Specials),
+    one_part(Text, Specials),
+    split_string(Text, " ", "", [ST, PT, OT]),
+    ST \== "",
+    PT \== "",
+    OT \== "",
+    local_token(ST, Text, S),
+    local_token(PT, Text, P),
+    local_object_token(OT, Text, O).
+
+plain_statement_tokens(Text, ST, PT, OT) :-
+    plain_text(Text),
+    split_string(Text, " ", "", [ST, PT, OT]),
+    ST \== "",
+    PT \== "",
+    OT \== "".
+
+%!  general_statement(+Text, -Triple) is det.
+%
+%   Parse a statement the general way: trim, tokenize, then decide
+%   every token.  parse_statement/2 gives the same result faster on the
+%   texts its fast paths accept (the tests compare both).
+
+general_statement(Text, Triple) :-
+    statement_tokens(Text, Stmt, ST, PT, OT),
+    tokens_triple(ST, PT, OT, Stmt, Triple).
+
+tokens_triple(ST, PT, OT, Stmt, rdf(S, P, O)) :-
+    resource_token(ST, Stmt, S),
+    resource_token(PT, Stmt, P),
+    object_token(OT, Stmt, O).
+
+%   local_token(+Token, +Stmt, -Term) and local_object_token(+Token,
+%   +Stmt, -Term): as resource_token/3 and object_token/3 for a plain
+%   token without `:#<^@`: a name needs no further check.
+
+local_token(Token, Stmt, Term) :-
+    (   string_code(1, Token, 0'?)
+    ->  variable_token(Token, Stmt, Term)
+    ;   oro_default_namespace(NS),
+        atom_concat(NS, Token, Term)
+    ).
+
+local_object_token(Token, Stmt, Term) :-
+    string_code(1, Token, C),
+    (   C == 0'?
+    ->  variable_token(Token, Stmt, Term)
+    ;   name_start(C),
+        Token \== "true",
+        Token \== "false"
+    ->  oro_default_namespace(NS),
+        atom_concat(NS, Token, Term)
+    ;   string_codes(Token, Codes),
+        object_codes(Codes, Token, Term)
+    ).
+
+statement_tokens(Text, Stmt, ST, PT, OT) :-
     trim(Text, Stmt),
     tokenize(Stmt, 0'\s, Tokens),
     (   Tokens = [ST, PT, OT]
@@ -440,47 +623,63 @@ parse_statement(Text, rdf(S, P, O)) :-
     (   ( ST == "" ; PT == "" ; OT == "" )
     ->  throw(error(syntax_error(oro_statement_empty_token(Stmt)), _))
     ;   true
-    ),
-    resource_token(ST, Stmt, S),
-    resource_token(PT, Stmt, P),
-    object_token(OT, Stmt, O).
+    ).
+
+%   resource_token(+Token, +Stmt, -Term) and object_token(+Token, +Stmt,
+%   -Term): Token is not empty; Stmt is the statement (for errors).
+%
+%   An object token that starts with a letter, is not a boolean and
+%   has no `^` nor `@` can only be a name (so neither a typed nor a
+%   language-tagged literal): the common case, on the hot path of every
+%   add.  Other tokens are decided by object_codes/3, which gives names
+%   too.
 
 resource_token(Token, Stmt, Term) :-
-    (   variable_token(Token, Stmt, Var)
-    ->  Term = Var
+    (   string_code(1, Token, 0'?)
+    ->  variable_token(Token, Stmt, Term)
     ;   oro_name_iri(Token, Term)
     ).
 
 variable_token(Token, Stmt, var(Name)) :-
-    string_code(1, Token, 0'?),
     sub_atom(Token, 1, _, 0, Name),
     (   Name == ''
-    ->  throw(error(syntax_error(oro_statement_variable(Stmt)), _))
+    ->  string_from_text(Stmt, StmtString),
+        throw(error(syntax_error(oro_statement_variable(StmtString)), _))
     ;   true
     ).
 
 object_token(Token, Stmt, Term) :-
-    (   variable_token(Token, Stmt, Var)
-    ->  Term = Var
-    ;   plain_name(Token)
-    ->  oro_name_iri(Token, Term)
+    string_code(1, Token, C),
+    (   C == 0'?
+    ->  variable_token(Token, Stmt, Term)
+    ;   name_start(C),
+        Token \== "true",
+        Token \== "false"
+    ->  (   split_string(Token, ":#<^@", "", [_])
+        ->  oro_default_namespace(NS),
+            atom_concat(NS, Token, Term)
+        ;   split_string(Token, "^@", "", [_])
+        ->  oro_name_iri(Token, Term)
+        ;   string_codes(Token, Codes),
+            object_codes(Codes, Token, Term)
+        )
     ;   string_codes(Token, Codes),
         object_codes(Codes, Token, Term)
     ).
 
-%   plain_name(+Token): Token can only be a name (the common case, on
-%   the hot path of every add): it starts with a letter, is not a
-%   boolean and has no `^^` nor `@`.
+%   name_start(+Code): Code may start a name: a letter (code_type/2
+%   `alpha` less digits and `_`), decided by arithmetic for ASCII.
 
-plain_name(Token) :-
-    string_code(1, Token, C),
-    code_type(C, alpha),
-    \+ code_type(C, digit),
-    C \== 0'_,
-    Token \== "true",
-    Token \== "false",
-    \+ sub_string(Token, _, _, _, "^^"),
-    \+ sub_string(Token, _, _, _, "@").
+name_start(C) :-
+    (   C < 128
+    ->  (   C >= 0'a
+        ->  C =< 0'z
+        ;   C >= 0'A,
+            C =< 0'Z
+        )
+    ;   code_type(C, alpha),
+        \+ code_type(C, digit)
+    ).
 
 %   object_codes(+Codes, +Token, -Term): ORO's parseLiteral, in order:
 %   typed literal, boolean, quoted string, language-tagged string,
@@ -950,13 +1149,20 @@ digits_star -->
 
 oro_statements(Statements, Triples, Bindings) :-
     must_be(list, Statements),
-    foldl(statement_triple, Statements, Triples, [], Bindings0),
+    statement_triples(Statements, Triples, [], Bindings0),
     reverse(Bindings0, Bindings).
+
+statement_triples([], [], B, B).
+statement_triples([Statement|Statements], [Triple|Triples], B0, B) :-
+    statement_triple(Statement, Triple, B0, B1),
+    statement_triples(Statements, Triples, B1, B).
 
 statement_triple(Statement, rdf(S, P, O), B0, B) :-
     (   statement_text(Statement)
-    ->  oro_parse_statement(Statement, rdf(S0, P0, O0)),
-        foldl(bind_var, [S0-S, P0-P, O0-O], B0, B)
+    ->  parse_statement(Statement, rdf(S0, P0, O0)),
+        bind_var(S0, S, B0, B1),
+        bind_var(P0, P, B1, B2),
+        bind_var(O0, O, B2, B)
     ;   Statement = rdf(S0, P0, O0)
     ->  oro_resource(S0, S),
         oro_resource(P0, P),
@@ -971,12 +1177,17 @@ statement_text(X) :-
     ;   atom(X)
     ).
 
-bind_var(var(Name)-Var, B0, B) :-
-    !,
-    (   memberchk(Name=Var0, B0)
-    ->  Var = Var0,
-        B = B0
-    ;   B = [Name=Var|B0]
-    ).
-bind_var(Term-Term, B, B).
+%   bind_var(+Parsed, -Term, +Bindings0, -Bindings): Term is Parsed,
+%   or for var(Name) the variable bound to Name (a new one if Name is
+%   not in Bindings0 yet).
 
+bind_var(Parsed, Term, B0, B) :-
+    (   Parsed = var(Name)
+    ->  (   memberchk(Name=Var0, B0)
+        ->  Term = Var0,
+            B = B0
+        ;   B = [Name=Term|B0]
+        )
+    ;   Term = Parsed,
+        B = B0
+    ).
