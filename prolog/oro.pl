@@ -69,6 +69,10 @@
             oro_conflict/2,             % +Model, -Conflict
             oro_consistent_with/2,      % +Model, +Statements
             oro_safe_add/4,             % +Model, +Statements, +Profile, -Accepted
+            % explanations
+            oro_explain/3,              % +Model, +Statement, -Explanation
+            oro_explain_conflict/2,     % +Model, -Conflicts
+            oro_explain_conflict/3,     % +Model, +Conflict, -Explanation
             % agents and memory
             oro_agents/1,               % -Names
             oro_create_agent/2,         % +Name, +Individual
@@ -88,6 +92,7 @@
 :- use_module(oro/oro_agents).
 :- use_module(oro/oro_memory).
 :- use_module(oro/oro_consistency).
+:- use_module(oro/oro_explain).
 :- use_module(oro/oro_categorize).
 :- use_module(oro/oro_sparql).
 :- use_module(oro/oro_reason).

@@ -16,6 +16,7 @@
 :- use_module(oro_methods).
 :- use_module(oro_methods_sparql).
 :- use_module(oro_methods_categorization).
+:- use_module(oro_methods_explain).
 :- use_module(oro_plugins).
 
 /** <module> The ORO socket server
