@@ -1,19 +1,21 @@
 /*  oro events benchmark: latency of pushed events and cost of changes
-    with many watchers registered, over the socket.
+    with many watchers registered, over the socket and in process.
 
         swipl bench/bench_events.pl [--samples=200] [--levels=1,100,1000]
+                                    [--issue=true] [--world=100000]
+                                    [--hops=true]
 
     (default levels: 1,100,1000,1000-other; W-other puts the W watchers on
     another predicate)
 
-    It starts the real server (server/oro_server.pl --port=0) as a child
-    process and, on one connection, for each level W:
+    1. Levels.  It starts the real server (server/oro_server.pl
+    --port=0) as a child process and, on one connection, for each level
+    W:
 
       - resets the server, registers W NEW_INSTANCE watchers with
         distinct patterns `?o isOn shelf_I` (all on the predicate the
-        measured changes touch, so every change re-evaluates them all),
-        then the measured watcher `?o isOn bench_table`, last, so its
-        event comes after all the others have been evaluated;
+        measured changes touch), then the measured watcher
+        `?o isOn bench_table`, last;
       - event latency: time from sending `add [objN isOn bench_table]`
         (a new object each sample) to receiving the pushed event
         `["objN"]` (median, p99, and the median of the part after the
@@ -27,11 +29,36 @@
         (`objN isOn floor`, firing nothing), with W watchers and with
         none (level 0).
 
+    2. The case of issue #9 (`--issue`): a fresh server holding the
+    synthetic world of bench_common (`--world` triples, 25,000 objects
+    on 50 pieces of furniture at 100k), 333 classes `Kind_K` under
+    Artifact, and 1,000 NEW_INSTANCE watchers of varied patterns, one
+    in three of each: `?x isOn T` (T a piece of furniture holding 500
+    objects, or an empty table), `?x rdf:type Kind_K`, `?x isAt room_K`.
+    Each sample adds one statement that fires exactly one of them, a
+    different one each time, in turn `obj isOn T`, `obj rdf:type
+    Kind_K` and `obj isIn room_K` (isIn is a sub-property of isAt):
+    event latency median, p99 and max, and missed events (none or
+    another content within 5 s).
+
+    3. Hops (`--hops`): the same world and watchers in this process,
+    one subscriber for all of them, to split the latency of one event
+    into its steps: the writer's add (no watcher concerned; firing one,
+    with the monitor's snapshot and message), a bare thread-to-thread
+    message, the writer's add until the watcher thread has evaluated
+    the change (oro_events_sync/0), and until the subscriber's delivery
+    thread calls its goal.
+
     Between phases a registration of an already registered watcher
     serves as a barrier: it is answered once the watcher thread has
     processed every change before it.
 */
 
+:- prolog_load_context(directory, Dir),
+   atom_concat(Dir, '/../prolog', Lib),
+   asserta(user:file_search_path(library, Lib)).
+
+:- use_module(library(oro)).
 :- use_module(library(option)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
@@ -42,14 +69,31 @@
 
 opt_type(samples, samples, nonneg).
 opt_type(levels, levels, term).
+opt_type(issue, issue, boolean).
+opt_type(world, world, nonneg).
+opt_type(hops, hops, boolean).
 
 main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
     option(samples(Samples), Options, 200),
     bench_list_option(levels(Levels), Options, [1, 100, 1000, 1000-other]),
+    option(issue(Issue), Options, true),
+    option(world(World), Options, 100000),
+    option(hops(Hops), Options, true),
     bench_machine,
-    bench_with_server([], Port, _, bench(Port, Samples, Levels)).
+    (   Levels == []
+    ->  true
+    ;   bench_with_server([], Port, _, bench(Port, Samples, Levels))
+    ),
+    (   Issue == true
+    ->  bench_with_server([], Port2, _, issue(Port2, World, Samples))
+    ;   true
+    ),
+    (   Hops == true
+    ->  hops(World, Samples)
+    ;   true
+    ).
 
 %   call_ok(+Conn, +Method, +Params[, -Value]): a request whose next
 %   message must be its `ok` (no event is pending when it is used),
@@ -131,6 +175,14 @@ latency(Conn, Id, W, I, Result) :-
     format(atom(Obj), "obj_~d_~d", [W, I]),
     format(string(Stmt), "[~w isOn bench_table]", [Obj]),
     format(string(Expected), "[\"~w\"]", [Obj]),
+    event_latency(Conn, Id, Stmt, Expected, Result).
+
+%   event_latency(+Conn, +Id, +Stmt, +Expected, -Result): send `add
+%   Stmt`; Result is Latency-AfterOk (microseconds from sending, and
+%   from the `ok`, to the event Id with content Expected), or
+%   missed(Message).
+
+event_latency(Conn, Id, Stmt, Expected, Result) :-
     get_time(T0),
     bench_send(Conn, add, [Stmt]),
     bench_receive(Conn, Reply, 30),
@@ -158,6 +210,219 @@ add_statement(unwatched, W, I, Stmt) :-
     format(string(Stmt), "[plain_~d_~d hasColor red]", [W, I]).
 add_statement(watched, W, I, Stmt) :-
     format(string(Stmt), "[plain_~d_~d isOn floor]", [W, I]).
+
+		 /*******************************
+		 *        ISSUE #9 CASE         *
+		 *******************************/
+
+%   issue_watchers(-Watchers): the 1,000 watchers, as w(N, Pattern,
+%   Fire) with Fire(+Obj, -Statement) the statement that makes Obj a new
+%   value of watcher N only.
+
+issue_watchers(Watchers) :-
+    findall(w(N, Pattern, Fire),
+            ( between(0, 999, N),
+              issue_watcher(N, Pattern, Fire)
+            ), Watchers).
+
+issue_watcher(N, Pattern, fire("~w isOn ~w", Table)) :-
+    N mod 3 =:= 0,
+    !,
+    K is N // 3,
+    (   K < 50
+    ->  format(atom(Table), "furniture~d", [K])     % 500 objects on it
+    ;   format(atom(Table), "table_~d", [K])
+    ),
+    format(string(Pattern), "?x isOn ~w", [Table]).
+issue_watcher(N, Pattern, fire("~w rdf:type ~w", Class)) :-
+    N mod 3 =:= 1,
+    !,
+    K is N // 3,
+    format(atom(Class), "Kind_~d", [K]),
+    format(string(Pattern), "?x rdf:type ~w", [Class]).
+issue_watcher(N, Pattern, fire("~w isIn ~w", Room)) :-
+    K is N // 3,
+    format(atom(Room), "room_~d", [K]),
+    format(string(Pattern), "?x isAt ~w", [Room]).
+
+issue_classes(Statements) :-
+    findall(S, ( between(0, 332, K),
+                 format(string(S), "Kind_~d rdfs:subClassOf Artifact", [K])
+               ), Statements).
+
+fire_statement(fire(Format, Arg), Obj, Statement) :-
+    format(string(Statement), Format, [Obj, Arg]).
+
+%   issue_sample(+I, -N): the watcher fired by sample I: every watcher
+%   in turn, from a stride prime to 1,000.
+
+issue_sample(I, N) :-
+    N is (I * 337) mod 1000.
+
+issue(Port, World, Samples) :-
+    bench_with_connection(Port, Conn, issue_run(Conn, World, Samples)).
+
+issue_run(Conn, World, Samples) :-
+    call_ok(Conn, reset, []),
+    bench_world(World, Texts),
+    bench_batches(Texts, 100, Batches),
+    forall(member(B, Batches), call_ok(Conn, add, [B])),
+    issue_classes(Classes),
+    call_ok(Conn, add, [Classes]),
+    issue_watchers(Watchers),
+    findall(N-Id-T,
+            ( member(w(N, Pattern, _), Watchers),
+              bench_time(call_ok(Conn, registerEvent,
+                                 ["NEW_INSTANCE", "ON_TRUE", "x", [Pattern]], Id),
+                         T)
+            ), Registered),
+    findall(T, member(_-_-T, Registered), RegTimes),
+    findall(Result,
+            ( between(1, Samples, I),
+              issue_sample(I, N),
+              memberchk(N-Id-_, Registered),
+              memberchk(w(N, _, Fire), Watchers),
+              format(atom(Obj), "issue_obj_~d", [I]),
+              fire_statement(Fire, Obj, Stmt),
+              format(string(Text), "[~w]", [Stmt]),
+              format(string(Expected), "[\"~w\"]", [Obj]),
+              event_latency(Conn, Id, Text, Expected, Result)
+            ), Results),
+    findall(L, member(L-_, Results), Latencies),
+    findall(A, member(_-A, Results), AfterOk),
+    exclude(is_pair, Results, MissedList),
+    length(MissedList, Missed),
+    format("~nIssue #9: 1,000 NEW_INSTANCE watchers (isOn / rdf:type / isAt), \c
+            ~D asserted triples, over the socket~n", [World]),
+    format("~w~t~12|~w~t~14+~w~t~14+~w~t~14+~w~t~14+~w~n",
+           ['register', 'event median', 'event p99', 'event max',
+            'after ok', missed]),
+    median_text(RegTimes, Reg),
+    bench_summary(Latencies, LMedian, LP99),
+    bench_micros(LMedian, LMed),
+    bench_micros(LP99, LP),
+    max_text(Latencies, LMax),
+    median_text(AfterOk, AMed),
+    format("~w~t~12|~w~t~14+~w~t~14+~w~t~14+~w~t~14+~w~n",
+           [Reg, LMed, LP, LMax, AMed, Missed]),
+    flush_output.
+
+max_text([], -) :-
+    !.
+max_text(Times, Text) :-
+    max_list(Times, Max),
+    bench_micros(Max, Text).
+
+		 /*******************************
+		 *             HOPS             *
+		 *******************************/
+
+%   hops(+World, +Samples): the same world and watchers in this process,
+%   one subscriber whose delivery thread stamps each event.
+
+hops(World, Samples) :-
+    oro_init([]),
+    bench_world(World, Texts),
+    bench_batches(Texts, 100, Batches),
+    forall(member(B, Batches), oro_add(myself, B)),
+    issue_classes(Classes),
+    oro_add(myself, Classes),
+    issue_watchers(Watchers),
+    message_queue_create(Q),
+    oro_subscriber_create(stamp(Q), Subscriber, []),
+    findall(N-Id,
+            ( member(w(N, Pattern, _), Watchers),
+              oro_register_event(myself, new_instance, on_true, x, [Pattern],
+                                 Subscriber, Id)
+            ), Registered),
+    hop_samples(Samples, Registered, Watchers, Q, Rows),
+    thread_hop(Samples, Hop),
+    oro_subscriber_destroy(Subscriber),
+    message_queue_destroy(Q),
+    format("~nHops of one event, in process (same world and watchers)~n", []),
+    format("~w~t~56|~w~t~14+~w~n", [step, median, p99]),
+    forall(member(Name-Times, [ 'writer: add, no watcher concerned'-Unwatched,
+                                'writer: add firing one watcher'-Writer,
+                                'one thread-to-thread message'-Hop,
+                                'add until the watcher thread is done (sync)'-Synced,
+                                'add until the delivery thread has it'-Delivered
+                              ]),
+           ( Rows = rows(Unwatched, Writer, Synced, Delivered),
+             bench_summary(Times, Median, P99),
+             bench_micros(Median, M),
+             bench_micros(P99, P),
+             format("~w~t~56|~w~t~14+~w~n", [Name, M, P])
+           )),
+    flush_output.
+
+stamp(Q, Id, Content) :-
+    get_time(T),
+    thread_send_message(Q, delivered(Id, Content, T)).
+
+%   hop_samples(+Samples, +Registered, +Watchers, +Q, -Rows): per
+%   sample, an add on a predicate no watcher uses; an add firing one
+%   watcher, timed until it returns and until its event is delivered;
+%   and an add firing one watcher followed by oro_events_sync/0.
+
+hop_samples(Samples, Registered, Watchers, Q, rows(Unwatched, Writer, Synced, Delivered)) :-
+    findall(s(U, W, D, S),
+            ( between(1, Samples, I),
+              hop_sample(I, Registered, Watchers, Q, U, W, D, S)
+            ), Rows),
+    findall(U, member(s(U, _, _, _), Rows), Unwatched),
+    findall(W, member(s(_, W, _, _), Rows), Writer),
+    findall(D, member(s(_, _, D, _), Rows), Delivered),
+    findall(S, member(s(_, _, _, S), Rows), Synced).
+
+hop_sample(I, Registered, Watchers, Q, U, W, D, S) :-
+    format(string(Plain), "hop_plain_~d hasColor red", [I]),
+    bench_time(oro_add(myself, [Plain]), U),
+    issue_sample(I, N),
+    memberchk(N-Id, Registered),
+    memberchk(w(N, _, Fire), Watchers),
+    format(atom(Obj), "hop_obj_~d", [I]),
+    fire_statement(Fire, Obj, Stmt),
+    get_time(T0),
+    oro_add(myself, [Stmt]),
+    get_time(T1),
+    thread_get_message(Q, delivered(Id, _, T2)),
+    W is (T1 - T0) * 1.0e6,
+    D is (T2 - T0) * 1.0e6,
+    format(atom(Obj2), "hop_sync_~d", [I]),
+    fire_statement(Fire, Obj2, Stmt2),
+    get_time(T3),
+    oro_add(myself, [Stmt2]),
+    oro_events_sync,
+    get_time(T4),
+    thread_get_message(Q, delivered(Id, _, _)),
+    S is (T4 - T3) * 1.0e6.
+
+%   thread_hop(+Samples, -Times): one message to another thread, half
+%   the round trip of a ping to a thread that answers.
+
+thread_hop(Samples, Times) :-
+    thread_self(Me),
+    message_queue_create(In),
+    thread_create(pong(In), Pong, []),
+    findall(T,
+            ( between(1, Samples, _),
+              get_time(T0),
+              thread_send_message(In, ping(Me)),
+              thread_get_message(pong),
+              get_time(T1),
+              T is (T1 - T0) * 0.5e6
+            ), Times),
+    thread_send_message(In, stop),
+    thread_join(Pong, _),
+    message_queue_destroy(In).
+
+pong(In) :-
+    thread_get_message(In, Message),
+    (   Message = ping(From)
+    ->  thread_send_message(From, pong),
+        pong(In)
+    ;   true
+    ).
 
 		 /*******************************
 		 *            REPORT            *

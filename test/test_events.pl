@@ -6,6 +6,11 @@
 :- use_module(library(pairs)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
+:- use_module(library(oro/oro_store),
+              [oro_store_write/2, oro_store_assert/3, oro_store_retract/2]).
+:- use_module(library(settings)).
+:- use_module(library(random)).
+:- use_module(library(aggregate)).
 
 /*  Tests of events (ORO-SPEC §1.4, §7, vectors §13.10, per-agent events
     of §13.11 and the seed session §13.13), over real sockets on
@@ -1504,3 +1509,408 @@ test(toggles_from_four_clients, [ setup(ev_fresh),
     ev_stress(Result).
 
 :- end_tests(events_stress).
+
+                 /*******************************
+                 *     INCREMENTAL EVALUATION   *
+                 *******************************/
+
+%   Watchers are evaluated from the triples a change adds or removes
+%   where that is sound (oro_events module doc).  The guard: random
+%   changes on a small world with inferences (sub-classes, a
+%   sub-property isOn of isAt, inverses, a symmetric and a transitive
+%   property with a sub-property, domain and range, a functional
+%   property, literals, facts of the ontology layer removed and put
+%   back, owl:sameAs and sub-class axioms added and removed) are made
+%   twice from a fresh store, once with incremental evaluation and once
+%   with oro_events:incremental set to false, with the same watchers
+%   of every type and trigger; both must fire exactly the same events
+%   at the same changes.  The changes are drawn from fixed seeds, before
+%   either run.
+
+ev_inc_ontology(
+"@prefix :     <http://kb.openrobots.org#> .
+@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .
+@prefix owl:  <http://www.w3.org/2002/07/owl#> .
+
+:Obj a owl:Class .
+:Cup a owl:Class ; rdfs:subClassOf :Obj .
+:Mug a owl:Class ; rdfs:subClassOf :Cup .
+:Place a owl:Class .
+:Table a owl:Class ; rdfs:subClassOf :Place .
+:Person a owl:Class .
+:isAt a owl:ObjectProperty .
+:isOn a owl:ObjectProperty ; rdfs:subPropertyOf :isAt .
+:isUnder a owl:ObjectProperty ; owl:inverseOf :isOn .
+:isNextTo a owl:ObjectProperty , owl:SymmetricProperty .
+:contains a owl:ObjectProperty , owl:TransitiveProperty .
+:componentOf a owl:ObjectProperty ; rdfs:subPropertyOf :contains .
+:isInside a owl:ObjectProperty ; owl:inverseOf :contains .
+:holds a owl:ObjectProperty ; rdfs:domain :Person ; rdfs:range :Obj .
+:locatedIn a owl:ObjectProperty , owl:FunctionalProperty ;
+    rdfs:subPropertyOf :isAt ; rdfs:range :Place .
+:hasAge a owl:DatatypeProperty .
+:i1 :isOn :i2 .
+:i3 :contains :i4 .
+:i5 a :Mug .
+").
+
+%   ev_inc_store: a fresh store on that ontology alone.
+
+ev_inc_store :-
+    ev_stop,
+    ev_inc_ontology(Text),
+    setup_call_cleanup(
+        tmp_file_stream(File, Out, [extension(ttl), encoding(utf8)]),
+        ( write(Out, Text),
+          close(Out),
+          oro_init([commonsense(false), ontologies([File])])
+        ),
+        delete_file(File)).
+
+ev_inc_cleanup :-
+    set_setting(oro_events:incremental, true),
+    oro_reset.
+
+%   The watchers: Type-Var-Patterns, each registered with every trigger
+%   (NEW_CLASS_INSTANCE with those that fire).
+
+ev_inc_watch(new_instance, x, ["?x isOn i1"]).
+ev_inc_watch(new_instance, x, ["?x isAt ?y"]).
+ev_inc_watch(new_instance, y, ["?x isAt ?y"]).
+ev_inc_watch(new_instance, x, ["?x isAt i2"]).
+ev_inc_watch(new_instance, x, ["?x rdf:type Cup"]).
+ev_inc_watch(new_instance, x, ["?x rdf:type Person"]).
+ev_inc_watch(new_instance, y, ["?x isUnder ?y", "?y rdf:type Table"]).
+ev_inc_watch(new_instance, x, ["i1 isNextTo ?x"]).
+ev_inc_watch(new_instance, x, ["?x isNextTo ?x"]).
+ev_inc_watch(new_instance, y, ["?x contains ?y"]).
+ev_inc_watch(new_instance, x, ["i3 contains ?x"]).
+ev_inc_watch(new_instance, x, ["?x isInside i4"]).
+ev_inc_watch(new_instance, z, ["?x holds ?y", "?y isOn ?z"]).
+ev_inc_watch(new_instance, c, ["i2 rdf:type ?c"]).
+ev_inc_watch(new_instance, x, ["?x rdf:type ?c"]).
+ev_inc_watch(new_instance, x, ["?x rdf:type owl:Thing"]).
+ev_inc_watch(new_instance, x, ["?x ?p i5"]).
+ev_inc_watch(new_instance, y, ["?x owl:sameAs ?y"]).
+ev_inc_watch(new_instance, a, ["?x hasAge ?a"]).
+ev_inc_watch(new_instance, x, ["?x hasAge 3"]).
+ev_inc_watch(new_instance, x, ["?x locatedIn ?y", "?y isNextTo i6"]).
+ev_inc_watch(new_instance, v, ["?x isOn ?y"]).
+ev_inc_watch(new_class_instance, '', ["Cup"]).
+ev_inc_watch(new_class_instance, '', ["Obj"]).
+ev_inc_watch(new_class_instance, '', ["Place"]).
+ev_inc_watch(fact_checking, '', ["i1 isOn i2"]).
+ev_inc_watch(fact_checking, '', ["?x isOn ?y", "?y isOn ?x"]).
+ev_inc_watch(fact_checking, '', ["i3 contains i5"]).
+ev_inc_watch(fact_checking, '', ["?x rdf:type Person"]).
+ev_inc_watch(fact_checking, '', ["i1 isAt ?y", "?y rdf:type Place"]).
+
+ev_inc_triggers(new_class_instance, [on_true, on_true_one_shot, on_toggle]) :- !.
+ev_inc_triggers(_, [on_toggle, on_true, on_false, on_true_one_shot,
+                    on_false_one_shot]).
+
+%   ev_inc_register(+Subscriber, -Ids): register every watcher; Ids
+%   lists their ids in registration order.
+
+ev_inc_register(Subscriber, Ids) :-
+    findall(Type-Trigger-Var-Patterns,
+            ( ev_inc_watch(Type, Var, Patterns),
+              ev_inc_triggers(Type, Triggers),
+              member(Trigger, Triggers)
+            ), Watchers),
+    findall(Id, ( member(Type-Trigger-Var-Patterns, Watchers),
+                  oro_register_event(myself, Type, Trigger, Var, Patterns,
+                                     Subscriber, Id)
+                ), Ids).
+
+%   Random changes.  The generator keeps the statements that may be
+%   asserted, to remove some of them; it starts from the ontology's
+%   facts (removing one masks it).
+
+ev_inc_individual(X) :-
+    random_between(1, 6, N),
+    format(atom(X), "i~d", [N]).
+
+ev_inc_statement(S) :-
+    random_between(1, 12, K),
+    ev_inc_individual(X),
+    ev_inc_individual(Y),
+    (   K =< 3
+    ->  random_member(C, ['Cup', 'Mug', 'Obj', 'Table', 'Place', 'Person']),
+        format(string(S), "~w rdf:type ~w", [X, C])
+    ;   K =< 4
+    ->  random_between(2, 4, Age),
+        format(string(S), "~w hasAge ~d", [X, Age])
+    ;   random_member(P, [isOn, isUnder, isAt, isNextTo, contains,
+                          componentOf, isInside, holds, locatedIn]),
+        format(string(S), "~w ~w ~w", [X, P, Y])
+    ).
+
+ev_inc_statements(Min, Max, Ss) :-
+    random_between(Min, Max, N),
+    length(Ss, N),
+    maplist(ev_inc_statement, Ss).
+
+ev_inc_pick(Pool, Min, Max, Ss) :-
+    random_between(Min, Max, N),
+    length(Pool, L),
+    (   L =:= 0
+    ->  Ss = []
+    ;   findall(S, ( between(1, N, _),
+                     random_member(S, Pool)
+                   ), Ss0),
+        sort(Ss0, Ss)
+    ).
+
+ev_inc_ops(Seed, N, Ops) :-
+    set_random(seed(Seed)),
+    ev_inc_ops_(N, ["i1 isOn i2", "i3 contains i4", "i5 rdf:type Mug"], Ops).
+
+ev_inc_ops_(0, _, []) :-
+    !.
+ev_inc_ops_(N, Pool0, [Op|Ops]) :-
+    random_between(1, 100, R),
+    (   R =< 40
+    ->  ev_inc_statements(1, 3, Ss),
+        Op = add(Ss),
+        append(Ss, Pool0, Pool)
+    ;   R =< 65
+    ->  ev_inc_pick(Pool0, 1, 2, Ss),
+        Op = remove(Ss),
+        subtract(Pool0, Ss, Pool)
+    ;   R =< 78
+    ->  ev_inc_individual(X),
+        ev_inc_individual(Y),
+        format(string(S), "~w locatedIn ~w", [X, Y]),
+        Op = update([S]),
+        Pool = [S|Pool0]
+    ;   R =< 84
+    ->  ev_inc_pick(Pool0, 1, 1, Rs),
+        ev_inc_statements(1, 2, As),
+        Op = update_and_remove(As, Rs),
+        subtract(Pool0, Rs, Pool1),
+        append(As, Pool1, Pool)
+    ;   R =< 88
+    ->  random_member(P, ["?x isOn ?y", "?x contains ?y", "?x rdf:type ?c",
+                            "i1 ?p ?o"]),
+        Op = clear([P]),
+        Pool = Pool0
+    ;   R =< 94
+    ->  ev_inc_individual(X),
+        ev_inc_individual(Y),
+        format(string(S), "~w owl:sameAs ~w", [X, Y]),
+        random_member(Op, [add([S]), remove([S])]),
+        Pool = Pool0
+    ;   random_member(S, ["Mug rdfs:subClassOf Table",
+                          "isNextTo rdfs:subPropertyOf isAt",
+                          "componentOf rdfs:subPropertyOf isOn"]),
+        random_member(Op, [add([S]), remove([S])]),
+        Pool = Pool0
+    ),
+    N1 is N - 1,
+    ev_inc_ops_(N1, Pool, Ops).
+
+ev_inc_apply(add(Ss)) :-
+    oro_add(myself, Ss).
+ev_inc_apply(remove(Ss)) :-
+    oro_remove(myself, Ss).
+ev_inc_apply(update(Ss)) :-
+    oro_update(myself, Ss).
+ev_inc_apply(update_and_remove(As, Rs)) :-
+    oro_statements(As, Adds, _),
+    oro_statements(Rs, Removes, _),
+    oro_store_write(test(myself),
+                    ( oro_store_retract(myself, Removes),
+                      oro_store_assert(myself, Adds, longterm)
+                    )).
+ev_inc_apply(clear(Ps)) :-
+    oro_clear(myself, Ps).
+
+%   ev_inc_run(+Incremental, +Ops, -Log): from a fresh store, register
+%   the watchers (one subscriber, called in the watcher thread, so that
+%   every firing of a change is logged once oro_events_sync/0 returns),
+%   make the changes, and log Step-WatcherIndex-Content for each
+%   firing.
+
+ev_inc_run(Incremental, Ops, Log) :-
+    ev_inc_store,
+    set_setting(oro_events:incremental, Incremental),
+    message_queue_create(Q),
+    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( ev_inc_register(Subscriber, Ids),
+          findall(Step-Firings,
+                  ( nth1(Step, Ops, Op),
+                    ev_inc_apply(Op),
+                    oro_events_sync,
+                    ev_inc_drain(Q, Ids, Firings)
+                  ), Log)
+        ),
+        ( oro_subscriber_destroy(Subscriber),
+          message_queue_destroy(Q)
+        )).
+
+ev_inc_drain(Q, Ids, Firings) :-
+    (   thread_get_message(Q, ev(f, Id, Content), [timeout(0)])
+    ->  nth1(I, Ids, Id),
+        Firings = [I-Content|Rest],
+        ev_inc_drain(Q, Ids, Rest)
+    ;   Firings = []
+    ).
+
+%   ev_inc_compare(+Seed, +N, -Result): `same(Firings)` (the number of
+%   firings) or the first step where the two runs differ.
+
+ev_inc_compare(Seed, N, Result) :-
+    ev_inc_ops(Seed, N, Ops),
+    ev_inc_run(true, Ops, Incremental),
+    ev_inc_run(false, Ops, Full),
+    (   Incremental == Full
+    ->  aggregate_all(sum(L), ( member(_-Fs, Full), length(Fs, L) ), Count),
+        Result = same(Count)
+    ;   nth1(Step, Incremental, I),
+        nth1(Step, Full, F),
+        I \== F
+    ->  nth1(Step, Ops, Op),
+        Result = differ(Seed, Step, Op, incremental(I), full(F))
+    ;   Result = differ(Seed, lengths)
+    ).
+
+ev_inc_fires(Seed, N) :-
+    ev_inc_compare(Seed, N, Result),
+    assertion(Result = same(_)),
+    Result = same(Count),
+    assertion(Count > 0).
+
+:- begin_tests(events_incremental,
+               [ cleanup(ev_inc_cleanup)
+               ]).
+
+test(random_changes_seed_1) :-
+    ev_inc_fires(1, 40).
+test(random_changes_seed_2) :-
+    ev_inc_fires(2, 40).
+test(random_changes_seed_3) :-
+    ev_inc_fires(3, 40).
+test(random_changes_seed_4) :-
+    ev_inc_fires(4, 40).
+
+:- end_tests(events_incremental).
+
+%   ev_inc_session(+Watchers, +Ops, -Log): from a fresh store on the
+%   small world, register Watchers (Type-Trigger-Var-Patterns), apply
+%   Ops (as ev_inc_apply/1 takes them, or bulk(N, Statement) to add N
+%   statements and Statement in one change), and log, for each change,
+%   the firings as WatcherIndex-Names (local names of the values).
+
+ev_inc_session(Watchers, Ops, Log) :-
+    ev_inc_store,
+    message_queue_create(Q),
+    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( findall(Id, ( member(Type-Trigger-Var-Patterns, Watchers),
+                        oro_register_event(myself, Type, Trigger, Var, Patterns,
+                                           Subscriber, Id)
+                      ), Ids),
+          findall(Firings,
+                  ( member(Op, Ops),
+                    ev_inc_session_apply(Op),
+                    oro_events_sync,
+                    ev_inc_drain(Q, Ids, Firings0),
+                    maplist(ev_inc_names, Firings0, Firings)
+                  ), Log)
+        ),
+        ( oro_subscriber_destroy(Subscriber),
+          message_queue_destroy(Q)
+        )).
+
+ev_inc_session_apply(bulk(N, Statement)) :-
+    !,
+    findall(S, ( between(1, N, I),
+                 format(string(S), "bulk_~d isNextTo i6", [I])
+               ), Ss),
+    oro_add(myself, [Statement|Ss]).
+ev_inc_session_apply(Op) :-
+    ev_inc_apply(Op).
+
+ev_inc_names(I-Content, I-Names) :-
+    maplist(ev_inc_name, Content, Names).
+
+ev_inc_name(IRI, Name) :-
+    (   rdf_global_id(oro:Name0, IRI)
+    ->  Name = Name0
+    ;   Name = IRI
+    ).
+
+:- begin_tests(events_incremental_cases,
+               [ cleanup(ev_inc_cleanup)
+               ]).
+
+test(one_of_many_anchored_watchers,
+     [ true(Log == [[150-[c1]], [], [150-[c1]]])
+     ]) :-
+    findall(new_instance-on_toggle-x-[P],
+            ( between(1, 200, K),
+              format(string(P), "?x isOn table_~d", [K])
+            ), Watchers),
+    ev_inc_session(Watchers,
+                   [ add(["c1 isOn table_150"]),
+                     add(["c1 isOn table_1500", "c2 isNextTo table_150"]),
+                     remove(["c1 isOn table_150"])
+                   ], Log).
+test(through_inverse_and_sub_property,
+     [ true(Log == [[1-[c1], 2-[c1]], [], [1-[c1]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x isOn t1"],
+                     new_instance-on_toggle-x-["?x isAt t1"]
+                   ],
+                   [ add(["t1 isUnder c1"]),
+                     add(["c1 isAt t1"]),           % isAt now holds twice
+                     remove(["t1 isUnder c1"])      % isAt still holds, isOn not
+                   ], Log).
+test(same_as_individuals,
+     [ true(Log == [[], [1-[c1]], [1-[c1]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x isOn t1"] ],
+                   [ add(["t2 owl:sameAs t1"]),
+                     add(["c1 isOn t2"]),
+                     remove(["c1 isOn t2"])
+                   ], Log).
+test(transitive_chain,
+     [ true(Log == [[1-[c7]], [1-[c8]], [1-[c7, c8]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["i3 contains ?x"] ],
+                   [ add(["i4 contains c7"]),         % i3 contains i4 (ontology)
+                     add(["c7 componentOf c8"]),      % a sub-property
+                     remove(["i4 contains c7"])
+                   ], Log).
+test(ontology_fact_removed_and_back,
+     [ true(Log == [[1-[i1]], [1-[i1], 2-[]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x isOn i2"],
+                     fact_checking-on_toggle-''-["i1 isAt i2"]
+                   ],
+                   [ remove(["i1 isOn i2"]),       % the fact starts unknown (false)
+                     add(["i1 isOn i2"])
+                   ], Log).
+test(type_by_class_and_by_range,
+     [ true(Log == [[1-[c1], 2-[c1]], [2-[c2]], [1-[c1]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x rdf:type Cup"],
+                     new_class_instance-on_true-''-["Obj"]
+                   ],
+                   [ add(["c1 rdf:type Mug"]),
+                     add(["p1 holds c2"]),             % range Obj
+                     remove(["c1 rdf:type Mug"])
+                   ], Log).
+test(large_change_evaluated_in_full,
+     [ true(Log == [[1-[big], 2-[i6]], [1-[big]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x isOn t9"],
+                     new_instance-on_toggle-x-["bulk_1200 isNextTo ?x"]
+                   ],
+                   [ bulk(1200, "big isOn t9"),
+                     clear(["?x isOn t9"])
+                   ], Log).
+
+:- end_tests(events_incremental_cases).

@@ -17,8 +17,11 @@
 :- use_module(library(error)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(pairs)).
+:- use_module(library(assoc)).
 :- use_module(library(option)).
 :- use_module(library(debug)).
+:- use_module(library(settings)).
 :- use_module(library(uuid)).
 :- use_module(library(ordsets)).
 :- use_module(oro_names).
@@ -49,15 +52,13 @@ How changes reach watchers, exactly once and in order:
 
   - An rdf_monitor/2 callback, run by the writing thread when a
     transaction commits, only notes which models and predicates it
-    touched (and whether the schema changed); at the end of the
+    touched (and whether the schema changed) and the changed triples
+    themselves, up to 1,000 a transaction; at the end of the
     transaction it takes an rdf_db snapshot and queues one `change`
     message.  It never evaluates anything.
   - One watcher thread takes the changes in commit order and evaluates,
     inside the snapshot of each change, the watchers that change may
-    affect: those whose patterns use a predicate it touched, directly
-    or through sub-properties, inverses, symmetry, transitivity,
-    domains and ranges (all watchers of a model when its schema
-    changed).  So every transition is seen, even when changes follow
+    affect.  So every transition is seen, even when changes follow
     each other faster than they are evaluated, and the answer does not
     depend on timing.
   - Registration is queued the same way, with a snapshot taken under
@@ -73,12 +74,67 @@ How changes reach watchers, exactly once and in order:
 
 The watcher thread owns all watcher state; other threads only send it
 messages.
+
+## Incremental evaluation
+
+With 1,000 watchers a change must not cost 1,000 evaluations.  Each
+watcher keeps its state (the truth of its patterns, or its values, one
+fact a value) and is indexed, when registered and after each schema
+change, by what may change it:
+
+  - *dependencies*: the predicates whose triples can change its
+    solutions, through sub-properties, inverses, symmetry,
+    transitivity, domains and ranges (oro_pattern_dependencies/3), or
+    `any`.  Writers read them to decide whether to send a change at all.
+  - *triggers*: a dependency with an *anchor*.  Without transitivity a
+    pattern instance `S P O` that a triple `s q o` makes true (or
+    false) has S and O among s, o and their owl:sameAs individuals, so
+    `?x isOn table_3` is only triggered by a change mentioning
+    `table_3`: anchor res(table_3).  A type `?x rdf:type Cup` is
+    triggered by `s rdf:type D` only when D is under Cup:
+    anchor class(Cup).  The watcher thread looks the triggers of each
+    changed triple up by hash (predicate, anchor), so 1,000 watchers on
+    `isOn` with different tables cost one lookup each change.
+  - a *plan*: how each pattern can gain solutions from added triples.
+
+A triggered watcher is then evaluated from the change's triples
+(*seeded*): the inference closure only grows when triples are added,
+so a new solution must use, in some pattern, an instance that the
+change made true; each pattern the change concerns is solved with its
+subject and object bound to the resources of a changed triple (both
+ways round, and their sameAs individuals), or, through a transitive
+property, to what reaches them and what they reach; the other patterns
+are then solved with those bindings.  A removed triple can only make
+values false whose solutions used it: when the variable is the subject
+or object of the pattern concerned, only the values among the
+resources of the removed triple are checked again.
+
+Full evaluation remains, always correct, where seeding is not sound or
+not worth it: a schema change (or a change of the ontology layer), a
+transaction changing more than 1,000 triples, an rdf_update, a
+pattern with a variable predicate, on rdfs:subClassOf,
+rdfs:subPropertyOf or owl:sameAs, a type with neither end given, or
+whose subject and object are one variable (see pattern_kind/6), a
+removal under a transitive property or whose lost values cannot be
+narrowed, a true fact_checking watcher losing a triple it depends on,
+one not evaluated yet, and too many seeds (more than 2,000).  The
+setting `oro_events:incremental` (default `true`) set to `false` forces
+full evaluation of every affected watcher; the tests compare both on
+random changes.
 */
 
+:- setting(incremental, boolean, true,
+           'Evaluate watchers from the changed triples where sound; \c
+            false re-evaluates every affected watcher in full').
+
 :- dynamic
-    watcher/5,                      % Id, Model, Registry, Spec, Triples
-    watcher_state/2,                % Id, State
+    watcher/5,                      % Id, Model, Registry, Spec, Query
+    watcher_seq/2,                  % Id, Seq (registration order)
+    watcher_state/2,                % Id, unknown|truth(Bool)|values
+    watcher_value/2,                % Value, Id
     watcher_dep/3,                  % Model, PredicateOrAny, Id
+    watcher_trigger/5,              % Key, Model, Predicate, Anchor, Id
+    watcher_plan/2,                 % Id, Plan
     subscription/2,                 % Id, Subscriber
     subscriber/3,                   % Subscriber, Queue, Thread
     callback_subscriber/2,          % Id, Subscriber
@@ -86,12 +142,25 @@ messages.
     model_schema/2,                 % Model, Key (the watcher thread's)
     touched/2,                      % Model, Predicate  (thread_local use)
     touched_schema/0,
-    in_commit/0.
+    in_commit/0,
+    delta/5,                        % Model, add|del, S, P, O
+    delta_size/1,                   % N
+    delta_overflow/0.
 
 :- thread_local
     touched/2,
     touched_schema/0,
-    in_commit/0.
+    in_commit/0,
+    delta/5,
+    delta_size/1,
+    delta_overflow/0.
+
+%   Bounds of incremental evaluation: the triples a transaction may
+%   change and still be evaluated from its triples, and the seeds a
+%   watcher may be solved with in one change.
+
+max_delta(1000).
+max_seeds(2000).
 
 		 /*******************************
 		 *            START             *
@@ -166,26 +235,35 @@ monitor_(transaction(end(0), _)) :-
     flush_changes.
 monitor_(transaction(_, _)) :-
     !.
-monitor_(assert(_, P, O, G)) :-
+monitor_(assert(S, P, O, G)) :-
     !,
-    note(G, P, O).
-monitor_(retract(_, P, O, G)) :-
+    note(G, S, P, O, add).
+monitor_(retract(S, P, O, G)) :-
     !,
-    note(G, P, O).
-monitor_(update(_, P, O, G, _)) :-
+    note(G, S, P, O, del).
+monitor_(update(S, P, O, G, Action)) :-
     !,
-    note(G, P, O).
+    updated(Action, S, P, O, G, S1, P1, O1, G1),
+    note(G, S, P, O, update),
+    note(G1, S1, P1, O1, update).
 monitor_(_).
 
-note(Source, P, O) :-
+updated(subject(S1), _, P, O, G, S1, P, O, G).
+updated(predicate(P1), S, _, O, G, S, P1, O, G).
+updated(object(O1), S, P, _, G, S, P, O1, G).
+updated(graph(G1), S, P, O, _, S, P, O, G1).
+
+%   note(+Source, +S, +P, +O, +Sign): a triple of Source was added,
+%   removed or updated.  Nothing is noted while nobody watches.
+
+note(Source, S, P, O, Sign) :-
     (   watcher(_, _, _, _, _)
     ->  true
-    ;   flag(oro_events_pending, N, N),
-        N > 0
-    ),                                      % nobody watches: nothing to do
+    ;   pending
+    ),
     !,
     source_graph(Source, G),
-    graph_model(G, Model),
+    graph_model(G, Model, Layer),
     (   touched(Model, P)
     ->  true
     ;   assertz(touched(Model, P))
@@ -195,22 +273,68 @@ note(Source, P, O) :-
     ->  assertz(touched_schema)
     ;   true
     ),
+    note_delta(Model, Layer, Sign, S, P, O),
     (   in_commit
     ->  true
     ;   flush_changes                       % a write outside a transaction
     ).
-note(_, _, _).
+note(_, _, _, _, _).
 
 source_graph(G:_, G) :- !.
 source_graph(G, G).
 
-graph_model(G, Model) :-
-    (   oro_graph_layer(G, Model0, _)
-    ->  Model = Model0
+graph_model(G, Model, Layer) :-
+    (   oro_graph_layer(G, Model0, Layer0)
+    ->  Model = Model0,
+        Layer = Layer0
     ;   oro_ontology_graph(G)
-    ->  Model = '$all'
-    ;   Model = '$none'
+    ->  Model = '$all',
+        Layer = ontology
+    ;   Model = '$none',
+        Layer = none
     ).
+
+%   note_delta(+Model, +Layer, +Sign, +S, +P, +O): record the triple as
+%   added to or removed from the triples visible in Model (a triple
+%   put in a model's mask is removed from it).  Past max_delta/1
+%   triples, or for a change the watchers cannot follow triple by
+%   triple (the ontology layer, rdf_update), the list is dropped: the
+%   change is then evaluated in full.
+
+note_delta(Model, Layer, Sign0, S, P, O) :-
+    (   delta_overflow
+    ->  true
+    ;   Model == '$none'
+    ->  true
+    ;   delta_sign(Model, Layer, Sign0, Sign),
+        delta_room
+    ->  assertz(delta(Model, Sign, S, P, O))
+    ;   retractall(delta(_, _, _, _, _)),
+        retractall(delta_size(_)),
+        assertz(delta_overflow)
+    ).
+
+delta_sign(Model, Layer, Sign0, Sign) :-
+    Model \== '$all',
+    (   Sign0 == update
+    ->  fail
+    ;   Layer == mask
+    ->  opposite(Sign0, Sign)
+    ;   Sign = Sign0
+    ).
+
+opposite(add, del).
+opposite(del, add).
+
+delta_room :-
+    (   retract(delta_size(N0))
+    ->  true
+    ;   N0 = 0
+    ),
+    max_delta(Max),
+    N0 < Max,
+    N is N0 + 1,
+    assertz(delta_size(N)).
 
 flush_changes :-
     findall(M-P, retract(touched(M, P)), Touched),
@@ -218,6 +342,7 @@ flush_changes :-
     ->  Schema = true
     ;   Schema = false
     ),
+    take_delta(Delta),
     (   Touched == []
     ->  true
     ;   (   Schema == true
@@ -230,8 +355,18 @@ flush_changes :-
         ),
         rdf_snapshot(Snapshot),
         thread_send_message(oro_watcher_queue,
-                            change(Snapshot, Touched, Schema))
+                            change(Snapshot, Touched, Schema, Delta))
     ;   true
+    ).
+
+%   take_delta(-Delta): the triples noted in this transaction, as
+%   d(Model, Sign, S, P, O) terms, or `full`.
+
+take_delta(Delta) :-
+    retractall(delta_size(_)),
+    (   retract(delta_overflow)
+    ->  Delta = full
+    ;   findall(d(M, Sign, S, P, O), retract(delta(M, Sign, S, P, O)), Delta)
     ).
 
 %   A change that no watcher depends on is not sent at all.  The
@@ -298,7 +433,7 @@ oro_register_event(Model0, Type0, Trigger0, Var0, Patterns, Subscriber,
     must_be(oneof([plain, agent, internal]), Registry),
     event_var(Type, Var0, Var),
     subscriber_registry(Subscriber, _),
-    watcher_triples(Type, Model, Var, Patterns, Triples),
+    watcher_query(Type, Model, Var, Patterns, Query),
     Spec = spec(Type, Trigger, Var, Patterns),
     oro_events_start,
     thread_self(Me),
@@ -307,7 +442,7 @@ oro_register_event(Model0, Type0, Trigger0, Var0, Patterns, Subscriber,
                ( rdf_snapshot(Snapshot),
                  flag(oro_events_pending, N, N+1),
                  thread_send_message(oro_watcher_queue,
-                                     call(register(Model, Registry, Spec, Triples,
+                                     call(register(Model, Registry, Spec, Query,
                                                    Subscriber, Snapshot),
                                           Me, Tag))
                )),
@@ -354,11 +489,13 @@ event_var(_, _, '').
 text(X) :- string(X), !.
 text(X) :- atom(X).
 
-%   The patterns of a watcher as triples with the variables of the
-%   new_instance variable shared; a new_class_instance watcher watches
-%   `?instance rdf:type Class`.
+%   watcher_query(+Type, +Model, +Var, +Patterns, -Query): the query a
+%   watcher evaluates, query(Template, Triples), parsed once.  Template
+%   is the variable whose values a new_instance watcher follows (`none`
+%   if the patterns do not use it, or for fact_checking); a
+%   new_class_instance watcher follows X in `?X rdf:type Class`.
 
-watcher_triples(new_class_instance, Model, _, Patterns, [rdf(_, Type, Class)]) :-
+watcher_query(new_class_instance, Model, _, Patterns, query(X, [rdf(X, Type, Class)])) :-
     !,
     (   Patterns = [Name]
     ->  true
@@ -371,9 +508,14 @@ watcher_triples(new_class_instance, Model, _, Patterns, [rdf(_, Type, Class)]) :
     ->  true
     ;   throw(error(oro_event_registration(unknown_class(Name)), _))
     ).
-watcher_triples(_, _, _, Patterns, Triples) :-
-    catch(oro_statements(Patterns, Triples, _), error(Formal, _),
-          throw(error(oro_event_registration(pattern(Formal)), _))).
+watcher_query(Type, _, Var, Patterns, query(Template, Triples)) :-
+    catch(oro_statements(Patterns, Triples, Bindings), error(Formal, _),
+          throw(error(oro_event_registration(pattern(Formal)), _))),
+    (   Type == new_instance,
+        memberchk(Var=Template0, Bindings)
+    ->  Template = Template0
+    ;   Template = none
+    ).
 
 oro_name_class(Name, Class) :-
     (   text(Name)
@@ -547,11 +689,22 @@ oro_unsubscribe(Id) :-
 
 watcher_loop :-
     thread_get_message(oro_watcher_queue, Message),
-    catch(handle(Message), E, print_message(error, E)),
+    catch(handle(Message), E, handle_error(E)),
     watcher_loop.
 
-handle(change(Snapshot, Touched, Schema)) :-
-    call_cleanup(process_change(Snapshot, Touched, Schema),
+%   An error is reported and the thread goes on with the next message;
+%   an abort (the process halting) ends it quietly.
+
+handle_error(E) :-
+    (   E == '$aborted'
+    ->  throw(E)
+    ;   E = unwind(_)
+    ->  throw(E)
+    ;   print_message(error, E)
+    ).
+
+handle(change(Snapshot, Touched, Schema, Delta)) :-
+    call_cleanup(process_change(Snapshot, Touched, Schema, Delta),
                  ( rdf_delete_snapshot(Snapshot),
                    (   Schema == true
                    ->  flag(oro_events_pending, N, N-1)
@@ -577,12 +730,16 @@ run_direct_deliveries :-
 request(sync, true).
 request(reset, true) :-
     retractall(watcher(_, _, _, _, _)),
+    retractall(watcher_seq(_, _)),
     retractall(watcher_state(_, _)),
+    retractall(watcher_value(_, _)),
     retractall(watcher_dep(_, _, _)),
+    retractall(watcher_trigger(_, _, _, _, _)),
+    retractall(watcher_plan(_, _)),
     retractall(subscription(_, _)),
     forall(retract(model_schema(_, Key)), oro_drop_schema(Key)).
-request(register(Model, Registry, Spec, Triples, Subscriber, Snapshot), id(Id)) :-
-    call_cleanup(register(Model, Registry, Spec, Triples, Subscriber,
+request(register(Model, Registry, Spec, Query, Subscriber, Snapshot), id(Id)) :-
+    call_cleanup(register(Model, Registry, Spec, Query, Subscriber,
                           Snapshot, Id),
                  ( rdf_delete_snapshot(Snapshot),
                    flag(oro_events_pending, N, N-1)
@@ -605,42 +762,38 @@ register(Model, Registry, Spec, _, Subscriber, _, Id) :-
     ->  true
     ;   assertz(subscription(Id, Subscriber))
     ).
-register(Model, Registry, Spec, Triples, Subscriber, Snapshot, Id) :-
+register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
     uuid(Id, [version(4)]),
     rdf_transaction(ensure_schemas([Model]), oro(events), [snapshot(Snapshot)]),
     in_snapshot(Snapshot, [Model],
-                ( initial_state(Spec, Model, Triples, State),
-                  watcher_deps(Spec, Model, Triples, State, Deps)
+                ( initial_state(Spec, Model, Query, State, Values),
+                  watcher_index(Spec, Model, Query, State, Index)
                 )),
-    assertz(watcher(Id, Model, Registry, Spec, Triples)),
+    flag(oro_watcher_seq, Seq, Seq+1),
+    assertz(watcher(Id, Model, Registry, Spec, Query)),
+    assertz(watcher_seq(Id, Seq)),
     assertz(watcher_state(Id, State)),
-    forall(member(D, Deps), assertz(watcher_dep(Model, D, Id))),
+    forall(member(V, Values), assertz(watcher_value(V, Id))),
+    set_index(Id, Model, Index),
     assertz(subscription(Id, Subscriber)),
     debug(oro(events), 'Watcher ~w: ~q', [Id, Spec]).
 
-%   The initial state: fact_checking watchers start `false` and are not
-%   evaluated (ORO-SPEC §7.3); the others remember their current values.
+%   The initial state: fact_checking watchers start `unknown` (false)
+%   and are not evaluated (ORO-SPEC §7.3); the others remember their
+%   current values.
 
-initial_state(spec(fact_checking, _, _, _), _, _, unknown) :- !.
-initial_state(Spec, Model, Triples, values(Values)) :-
-    evaluate(Spec, Model, Triples, values(Values)).
-
-%   A fact_checking watcher not evaluated yet depends on any change (it
-%   fires at the first one if already true); so do one-shot triggers
-%   without edge detection, which fire at any change (ORO-SPEC §7.3).
-
-watcher_deps(spec(fact_checking, Trigger, _, _), _, _, State, [any]) :-
-    (   State == unknown
-    ;   memberchk(Trigger, [on_true_one_shot, on_false_one_shot])
-    ),
-    !.
-watcher_deps(_, Model, Triples, _, Deps) :-
-    oro_pattern_dependencies(Model, Triples, Deps).
+initial_state(spec(fact_checking, _, _, _), _, _, unknown, []) :- !.
+initial_state(_, Model, Query, values, Values) :-
+    query_values(Model, Query, Values).
 
 drop_watcher(Id) :-
     retractall(watcher(Id, _, _, _, _)),
+    retractall(watcher_seq(Id, _)),
     retractall(watcher_state(Id, _)),
+    retractall(watcher_value(_, Id)),
     retractall(watcher_dep(_, _, Id)),
+    retractall(watcher_trigger(_, _, _, _, Id)),
+    retractall(watcher_plan(Id, _)),
     retractall(subscription(Id, _)).
 
 drop_if_orphan(Id) :-
@@ -660,10 +813,182 @@ with_schemas(Models, Goal) :-
     oro_with_schemas(Keys, Goal).
 
 		 /*******************************
+		 *            INDEX             *
+		 *******************************/
+
+%!  watcher_index(+Spec, +Model, +Query, +State, -Index) is det.
+%
+%   Index is index(Deps, Triggers, Plan) for a watcher, computed with
+%   the schema of Model (see the module doc):
+%
+%     - Deps: `[any]` or the predicates whose triples may change it;
+%     - Triggers: Predicate-Anchor pairs, Anchor `none`, res(R) or
+%       class(C) (none when Deps is `[any]`);
+%     - Plan: `full`, `static` (a new_instance watcher whose variable
+%       is not in its patterns) or items(Items), one
+%       item(I, Kind, PDeps, Anchored) per pattern: its index I, its
+%       Kind (`step`, `type` or trans(Transitives)), its own
+%       dependencies (`any` or an ordset) and whether the template
+%       variable is its subject or object (`true` or `false`).
+
+watcher_index(Spec, Model, query(Template, Triples), State, index(Deps, Triggers, Plan)) :-
+    watcher_deps(Spec, Model, Triples, State, Deps),
+    watcher_plan(Spec, Model, Template, Triples, Plan),
+    (   Deps == [any]
+    ->  Triggers = []
+    ;   Plan = items(Items)
+    ->  findall(Q-Anchor, ( member(Item, Items),
+                            item_trigger(Item, Triples, Q, Anchor)
+                          ), Triggers0),
+        sort(Triggers0, Triggers)
+    ;   findall(Q-none, member(Q, Deps), Triggers)
+    ).
+
+%   A fact_checking watcher not evaluated yet depends on any change (it
+%   fires at the first one if already true); so do one-shot triggers
+%   without edge detection, which fire at any change (ORO-SPEC §7.3).
+
+watcher_deps(spec(fact_checking, Trigger, _, _), _, _, State, [any]) :-
+    (   State == unknown
+    ;   memberchk(Trigger, [on_true_one_shot, on_false_one_shot])
+    ),
+    !.
+watcher_deps(_, Model, Triples, _, Deps) :-
+    oro_pattern_dependencies(Model, Triples, Deps).
+
+watcher_plan(spec(new_instance, _, _, _), _, Template, _, static) :-
+    nonvar(Template),
+    !.
+watcher_plan(_, Model, Template, Triples, Plan) :-
+    findall(Item, ( nth1(I, Triples, Triple),
+                    pattern_item(Model, Template, I, Triple, Item)
+                  ), Items),
+    (   memberchk(item(_, full, _, _), Items)
+    ->  Plan = full
+    ;   Plan = items(Items)
+    ).
+
+pattern_item(Model, Template, I, rdf(S, P, O), item(I, Kind, Deps, Anchored)) :-
+    oro_pattern_dependencies(Model, [rdf(S, P, O)], Deps0),
+    (   Deps0 == [any]
+    ->  Deps = any
+    ;   Deps = Deps0
+    ),
+    pattern_kind(Model, S, P, O, Deps, Kind),
+    (   var(Template),
+        anchored(Kind, Template, S, O)
+    ->  Anchored = true
+    ;   Anchored = false
+    ).
+
+%   pattern_kind(+Model, +S, +P, +O, +Deps, -Kind): how the instances a
+%   change creates are found (see the module doc).  A type with both
+%   ends unbound is evaluated in full: solved unbound it only ranges
+%   over individuals, while a seeded subject could be a class.  So is a
+%   pattern whose subject and object are one variable (`?x near ?x`):
+%   solved unbound, owl:sameAs substitution does not check that both
+%   ends are the same individual, seeded it does.
+
+pattern_kind(_, _, P, _, _, full) :-
+    var(P),
+    !.
+pattern_kind(_, S, _, O, _, full) :-
+    var(S),
+    S == O,
+    !.
+pattern_kind(_, S, P, O, _, Kind) :-
+    rdf_equal(P, rdf:type),
+    !,
+    (   var(S),
+        var(O)
+    ->  Kind = full
+    ;   Kind = type
+    ).
+pattern_kind(_, _, P, _, _, full) :-
+    special_predicate(P),
+    !.
+pattern_kind(_, _, _, _, any, full) :-
+    !.
+pattern_kind(Model, _, _, _, Deps, Kind) :-
+    findall(T-TDeps, ( member(T, Deps),
+                       oro_transitive_property(Model, T),
+                       oro_pattern_dependencies(Model, [rdf(_, T, _)], TDeps)
+                     ), Transitives),
+    (   Transitives == []
+    ->  Kind = step
+    ;   Kind = trans(Transitives)
+    ).
+
+:- rdf_meta special_predicate(r).
+
+special_predicate(rdfs:subClassOf).
+special_predicate(rdfs:subPropertyOf).
+special_predicate(owl:sameAs).
+
+anchored(step, Template, S, O) :-
+    (   Template == S
+    ->  true
+    ;   Template == O
+    ).
+anchored(type, Template, S, _) :-
+    Template == S.
+
+%   item_trigger(+Item, +Triples, -Q, -Anchor): a change of a triple
+%   with predicate Q mentioning Anchor may change the pattern of Item.
+
+item_trigger(item(I, Kind, Deps, _), Triples, Q, Anchor) :-
+    Deps \== any,
+    nth1(I, Triples, rdf(S, _, O)),
+    member(Q, Deps),
+    item_anchor(Kind, Q, S, O, Anchor).
+
+item_anchor(step, _, S, O, Anchor) :-
+    !,
+    (   atom(S)
+    ->  Anchor = res(S)
+    ;   atom(O)
+    ->  Anchor = res(O)
+    ;   Anchor = none
+    ).
+item_anchor(type, Q, S, O, Anchor) :-
+    !,
+    (   atom(S)
+    ->  Anchor = res(S)
+    ;   atom(O),
+        rdf_equal(Q, rdf:type)
+    ->  Anchor = class(O)
+    ;   Anchor = none
+    ).
+item_anchor(_, _, _, _, none).
+
+%   set_index(+Id, +Model, +Index): install the index of watcher Id.
+%   New dependencies are added before the old ones go: writers read
+%   them (relevant/1) to decide whether to send a change, and must
+%   never see a watcher with none.  Triggers and plans are the watcher
+%   thread's own.
+
+set_index(Id, Model, index(Deps, Triggers, Plan)) :-
+    findall(D, watcher_dep(Model, D, Id), Old),
+    forall(( member(D, Deps), \+ memberchk(D, Old) ),
+           assertz(watcher_dep(Model, D, Id))),
+    forall(( member(D, Old), \+ memberchk(D, Deps) ),
+           retractall(watcher_dep(Model, D, Id))),
+    retractall(watcher_trigger(_, _, _, _, Id)),
+    forall(member(Q-Anchor, Triggers),
+           ( trigger_key(Model, Q, Anchor, Key),
+             assertz(watcher_trigger(Key, Model, Q, Anchor, Id))
+           )),
+    retractall(watcher_plan(Id, _)),
+    assertz(watcher_plan(Id, Plan)).
+
+trigger_key(Model, Q, Anchor, Key) :-
+    term_hash(t(Model, Q, Anchor), Key).
+
+		 /*******************************
 		 *           CHANGES            *
 		 *******************************/
 
-process_change(Snapshot, Touched, Schema) :-
+process_change(Snapshot, Touched, Schema, Delta) :-
     (   Schema == true
     ->  forget_schemas(Touched)
     ;   true
@@ -671,7 +996,9 @@ process_change(Snapshot, Touched, Schema) :-
     affected_models(Touched, Models),
     (   Models == []
     ->  true
-    ;   rdf_transaction(change_in_snapshot(Models, Touched, Schema),
+    ;   setting(incremental, Incremental),
+        rdf_transaction(change_in_snapshot(Models, Touched, Schema, Delta,
+                                           Incremental),
                         oro(events), [snapshot(Snapshot)])
     ).
 
@@ -691,13 +1018,18 @@ forget_schemas(Touched) :-
 affected_models(Touched, Models) :-
     (   memberchk('$all'-_, Touched)
     ->  findall(M, watcher(_, M, _, _, _), Models0)
-    ;   findall(M, ( member(M-_, Touched), watcher(_, M, _, _, _) ), Models0)
+    ;   findall(M, ( member(M-_, Touched),
+                     once(watcher(_, M, _, _, _))
+                   ), Models0)
     ),
     sort(Models0, Models).
 
-change_in_snapshot(Models, Touched, Schema) :-
+change_in_snapshot(Models, Touched, Schema, Delta, Incremental) :-
     ensure_schemas(Models),
-    with_schemas(Models, evaluate_models(Models, Touched, Schema)).
+    with_schemas(Models,
+                 forall(member(Model, Models),
+                        evaluate_model(Model, Touched, Schema, Delta,
+                                       Incremental))).
 
 ensure_schemas(Models) :-
     forall(( member(M, Models),
@@ -707,82 +1039,392 @@ ensure_schemas(Models) :-
              assertz(model_schema(M, Key))
            )).
 
-evaluate_models(Models, Touched, Schema) :-
-    forall(member(Model, Models),
-           evaluate_model(Model, Touched, Schema)).
+%   evaluate_model(+Model, +Touched, +Schema, +Delta, +Incremental):
+%   evaluate the watchers of Model the change may affect, in
+%   registration order.  Mode is `full` or delta(Added, Removed), the
+%   triples of the change in Model.
 
-evaluate_model(Model, Touched, Schema) :-
+evaluate_model(Model, Touched, Schema, Delta, Incremental) :-
     (   Schema == true
-    ->  findall(Id, watcher(Id, Model, _, _, _), Ids0)
+    ->  findall(Id, watcher(Id, Model, _, _, _), Ids0),
+        Mode = full
+    ;   Incremental == true,
+        Delta \== full,
+        \+ memberchk('$all'-_, Touched)
+    ->  model_delta(Model, Delta, Added, Removed, Same),
+        Mode = delta(Added, Removed, Same),
+        triggered_watchers(Model, Added, Removed, Same, Ids0)
     ;   findall(Id, ( watcher_dep(Model, any, Id)
-                    ; ( member(Model-P, Touched) ; member('$all'-P, Touched) ),
+                    ; ( member(Model-P, Touched)
+                      ; member('$all'-P, Touched)
+                      ),
                       watcher_dep(Model, P, Id)
-                    ), Ids0)
+                    ), Ids0),
+        Mode = full
     ),
-    sort(Ids0, Ids1),
-    order_by_registration(Ids1, Ids),
-    forall(member(Id, Ids), evaluate_watcher(Id, Schema)).
+    by_registration(Ids0, Ids),
+    debug(oro(events), 'Change of ~q: ~q', [Model, watchers(Ids)]),
+    forall(member(Id, Ids), evaluate_watcher(Id, Mode, Schema)).
+
+%   model_delta(+Model, +Delta, -Added, -Removed, -Same): the triples
+%   of Delta added to and removed from Model, as ordered sets of
+%   t(S, P, O), and an assoc from their resources to their owl:sameAs
+%   individuals (themselves included), looked up once a change.
+
+model_delta(Model, Delta, Added, Removed, Same) :-
+    findall(t(S, P, O), member(d(Model, add, S, P, O), Delta), Added0),
+    sort(Added0, Added),
+    findall(t(S, P, O), member(d(Model, del, S, P, O), Delta), Removed0),
+    sort(Removed0, Removed),
+    findall(X, ( member(d(Model, _, S, _, O), Delta),
+                 (   X = S
+                 ;   X = O
+                 ),
+                 atom(X)
+               ), Resources0),
+    sort(Resources0, Resources),
+    findall(X-Ys, ( member(X, Resources),
+                    findall(Y, oro_same_individual(Model, X, Y), Ys)
+                  ), Pairs),
+    list_to_assoc(Pairs, Same).
+
+%   triggered_watchers(+Model, +Added, +Removed, -Ids): the watchers
+%   depending on any change, and those a trigger of a changed triple
+%   names: by predicate alone, by a resource of the triple (or one of
+%   its owl:sameAs individuals) or, for a type, by a super class.
+
+triggered_watchers(Model, Added, Removed, Same, Ids) :-
+    findall(Id, ( watcher_dep(Model, any, Id)
+                ; ( member(t(S, P, O), Added)
+                  ; member(t(S, P, O), Removed)
+                  ),
+                  triggered(Model, Same, S, P, O, Id)
+                ), Ids).
+
+triggered(Model, Same, S, P, O, Id) :-
+    triple_anchor(Model, Same, S, P, O, Anchor),
+    trigger_key(Model, P, Anchor, Key),
+    watcher_trigger(Key, Model, P, Anchor, Id).
+
+triple_anchor(_, _, _, _, _, none).
+triple_anchor(_, Same, S, _, O, res(R)) :-
+    (   X = S
+    ;   X = O
+    ),
+    atom(X),
+    same_individual(Same, X, R).
+triple_anchor(Model, _, _, P, O, class(C)) :-
+    rdf_equal(P, rdf:type),
+    atom(O),
+    oro_subclass(Model, O, C).
 
 %   Watchers are evaluated in the order they were registered, so that
 %   two firings of one change reach a subscriber in a stable order.
 
-order_by_registration(Ids0, Ids) :-
-    findall(Id, ( watcher(Id, _, _, _, _), memberchk(Id, Ids0) ), Ids).
+by_registration(Ids0, Ids) :-
+    findall(Seq-Id, ( member(Id, Ids0),
+                      watcher_seq(Id, Seq)
+                    ), Pairs0),
+    sort(Pairs0, Pairs),
+    pairs_values(Pairs, Ids).
 
-evaluate_watcher(Id, Schema) :-
-    watcher(Id, Model, _, Spec, Triples),
+evaluate_watcher(Id, Mode, Schema) :-
+    watcher(Id, Model, _, Spec, Query),
     watcher_state(Id, State0),
     !,
-    evaluate(Spec, Model, Triples, State),
+    outcome(Mode, Id, Spec, Model, Query, State0, Outcome),
     Spec = spec(Type, Trigger, _, _),
-    firings(Type, Trigger, State0, State, Contents, Remove),
-    retractall(watcher_state(Id, _)),
-    assertz(watcher_state(Id, State)),
+    apply_outcome(Outcome, Id, State0, State),
+    firings(Type, Trigger, State0, Outcome, Contents, Remove),
     forall(member(Content, Contents), fire(Id, Content)),
     (   Remove == true
     ->  drop_watcher(Id)
     ;   (   Schema == true
         ;   State0 == unknown
         )
-    ->  refresh_deps(Id, Model, Spec, Triples, State)
+    ->  watcher_index(Spec, Model, Query, State, Index),
+        set_index(Id, Model, Index)
     ;   true
     ).
-evaluate_watcher(_, _).                     % dropped meanwhile
+evaluate_watcher(_, _, _).                  % dropped meanwhile
 
-%   The new dependencies are added before the old ones go: writers read
-%   them (relevant/1) to decide whether to send a change, and must never
-%   see a watcher with none.
+%   outcome(+Mode, +Id, +Spec, +Model, +Query, +State0, -Outcome): the
+%   new truth(Bool) of a fact_checking watcher, or diff(Added,
+%   Removed) of the values of the others (ordered sets), evaluated
+%   from the change's triples where the plan allows, else in full.
 
-refresh_deps(Id, Model, Spec, Triples, State) :-
-    watcher_deps(Spec, Model, Triples, State, Deps),
-    findall(D, watcher_dep(Model, D, Id), Old),
-    forall(( member(D, Deps), \+ memberchk(D, Old) ),
-           assertz(watcher_dep(Model, D, Id))),
-    forall(( member(D, Old), \+ memberchk(D, Deps) ),
-           retractall(watcher_dep(Model, D, Id))).
-
-evaluate(spec(fact_checking, _, _, _), Model, Triples, truth(Truth)) :-
+outcome(delta(Added, Removed, Same), Id, Spec, Model, Query, State0, Outcome) :-
+    watcher_plan(Id, Plan),
+    catch(delta_outcome(Plan, Spec, Id, Model-Same, Query, State0,
+                        Added, Removed, Outcome0),
+          oro_events_full, fail),
     !,
-    copy_term(Triples, Copy),
-    (   oro_solve(Model, Copy)
+    debug(oro(events), 'Watcher ~w: from the change, ~q', [Id, Outcome0]),
+    Outcome = Outcome0.
+outcome(_, Id, Spec, Model, Query, _, Outcome) :-
+    full_outcome(Spec, Id, Model, Query, Outcome),
+    debug(oro(events), 'Watcher ~w: in full, ~q', [Id, Outcome]).
+
+full_outcome(spec(fact_checking, _, _, _), _, Model, query(_, Triples), truth(Truth)) :-
+    !,
+    (   \+ \+ oro_solve(Model, Triples)
     ->  Truth = true
     ;   Truth = false
     ).
-evaluate(spec(new_class_instance, _, _, _), Model, [rdf(_, _, Class)], values(Values)) :-
-    !,
-    rdf_equal(rdf:type, Type),
-    oro_find_values(Model, X, [rdf(X, Type, Class)], Values).
-evaluate(spec(new_instance, _, Var, Patterns), Model, _, values(Values)) :-
-    oro_statements(Patterns, Triples, Bindings),
-    (   memberchk(Var=Template, Bindings)
+full_outcome(_, Id, Model, Query, diff(Added, Removed)) :-
+    query_values(Model, Query, Now),
+    findall(V, watcher_value(V, Id), Old0),
+    sort(Old0, Old),
+    ord_subtract(Now, Old, Added),
+    ord_subtract(Old, Now, Removed).
+
+query_values(Model, query(Template, Triples), Values) :-
+    (   var(Template)
     ->  oro_find_values(Model, Template, Triples, Values)
     ;   Values = []
     ).
 
-%!  firings(+Type, +Trigger, +State0, +State, -Contents, -Remove)
+apply_outcome(truth(Truth), Id, _, truth(Truth)) :-
+    retractall(watcher_state(Id, _)),
+    assertz(watcher_state(Id, truth(Truth))).
+apply_outcome(diff(Added, Removed), Id, State, State) :-
+    forall(member(V, Removed), retractall(watcher_value(V, Id))),
+    forall(member(V, Added), assertz(watcher_value(V, Id))).
+
+		 /*******************************
+		 *         INCREMENTAL          *
+		 *******************************/
+
+%   delta_outcome(+Plan, +Spec, +Id, +Ctx, +Query, +State0, +Added,
+%                 +Removed, -Outcome) is semidet.
 %
-%   The events a watcher sends when its state goes from State0 to
-%   State (ORO-SPEC §7.3), and whether it is then removed.
+%   The outcome of the change from its triples, in the new state; Ctx
+%   is Model-Same, Same as made by model_delta/5.  Fails, or throws
+%   oro_events_full, when the watcher must be evaluated in full.
+
+delta_outcome(static, _, _, _, _, _, _, _, diff([], [])).
+delta_outcome(items(Items), Spec, Id, Ctx, Query, State0, Added, Removed,
+              Outcome) :-
+    State0 \== unknown,
+    concerned(Items, Added, AddPairs),
+    concerned(Items, Removed, RemovePairs),
+    (   Spec = spec(fact_checking, _, _, _)
+    ->  truth_outcome(State0, Ctx, Query, AddPairs, RemovePairs, Outcome)
+    ;   lost_values(RemovePairs, Id, Ctx, Query, Lost),
+        new_values(AddPairs, Id, Ctx, Query, New),
+        Outcome = diff(New, Lost)
+    ).
+
+%   concerned(+Items, +Triples, -Pairs): Item-Triple for each pattern
+%   and changed triple whose predicate it depends on.
+
+concerned(_, [], []) :-
+    !.
+concerned(Items, Triples, Pairs) :-
+    findall(Item-t(S, P, O),
+            ( member(t(S, P, O), Triples),
+              member(Item, Items),
+              item_depends(Item, P)
+            ), Pairs).
+
+item_depends(item(_, _, any, _), _) :-
+    !.
+item_depends(item(_, _, Deps, _), P) :-
+    ord_memberchk(P, Deps).
+
+%   A true conjunction stays true when triples are only added; a false
+%   one becomes true only through a seeded solution.
+
+truth_outcome(truth(true), _, _, _, RemovePairs, truth(true)) :-
+    RemovePairs == [].
+truth_outcome(truth(false), Ctx, Query, AddPairs, _, truth(Truth)) :-
+    (   AddPairs == []
+    ->  Truth = false
+    ;   seeds(AddPairs, Ctx, Query, Seeds),
+        (   seeded_solution(Seeds, Ctx, Query)
+        ->  Truth = true
+        ;   Truth = false
+        )
+    ).
+
+%   lost_values(+RemovePairs, +Id, +Ctx, +Query, -Lost): the values no
+%   longer holding.  A lost value is the subject or object (or one of
+%   their sameAs individuals) of a removed triple when the template is
+%   the subject or object of every pattern concerned; otherwise any
+%   value may be lost, and the watcher is evaluated in full.
+
+lost_values([], _, _, _, []) :-
+    !.
+lost_values(RemovePairs, Id, Model-Same, Query, Lost) :-
+    \+ memberchk(item(_, _, _, false)-_, RemovePairs),
+    findall(V, ( member(_-t(S, _, O), RemovePairs),
+                 (   X = S
+                 ;   X = O
+                 ),
+                 same_individual(Same, X, V),
+                 watcher_value(V, Id)
+               ), Candidates0),
+    sort(Candidates0, Candidates),
+    exclude(value_holds(Model, Query), Candidates, Lost).
+
+value_holds(Model, Query, Value) :-
+    copy_term(Query, query(Value, Triples)),
+    \+ \+ oro_solve(Model, Triples).
+
+new_values([], _, _, _, []) :-
+    !.
+new_values(AddPairs, Id, Ctx, Query, New) :-
+    seeds(AddPairs, Ctx, Query, Seeds),
+    Ctx = Model-_,
+    findall(V, ( member(Seed, Seeds),
+                 seeded_query(Seed, Query, Template, Triples),
+                 oro_find_values(Model, Template, Triples, Vs),
+                 member(V, Vs),
+                 \+ watcher_value(V, Id)
+               ), New0),
+    sort(New0, New).
+
+seeded_solution(Seeds, Model-_, Query) :-
+    member(Seed, Seeds),
+    seeded_query(Seed, Query, _, Triples),
+    oro_solve(Model, Triples),
+    !.
+
+%   seeded_query(+Seed, +Query, -Template, -Triples): a copy of Query
+%   with the subject and object of pattern I bound as Seed says.
+
+seeded_query(seed(I, S1, O1), Query, Template, Triples) :-
+    copy_term(Query, query(Template, Triples)),
+    nth1(I, Triples, rdf(S, _, O)),
+    bind(S, S1),
+    bind(O, O1).
+
+bind(Term, Value) :-
+    (   var(Value)
+    ->  true
+    ;   var(Term)
+    ->  Term = Value
+    ;   true                                % checked by seed_fits/2
+    ).
+
+%   seeds(+AddPairs, +Ctx, +Query, -Seeds): seed(I, S, O) terms, the
+%   subject and object pattern I may take in an instance the added
+%   triples made true (O unbound for a type).  Throws oro_events_full
+%   past max_seeds/1.
+
+seeds(AddPairs, Ctx, query(_, Triples), Seeds) :-
+    findall(seed(I, S1, O1),
+            ( member(item(I, Kind, _, _)-t(S, P, O), AddPairs),
+              nth1(I, Triples, rdf(PS, _, PO)),
+              seed(Kind, Ctx, S, P, O, PS, PO, S1, O1)
+            ), Seeds0),
+    sort(Seeds0, Seeds),
+    length(Seeds, N),
+    max_seeds(Max),
+    (   N =< Max
+    ->  true
+    ;   throw(oro_events_full)
+    ).
+
+seed(step, _-Same, S, _, O, PS, PO, S1, O1) :-
+    step_seed(Same, S, O, PS, PO, S1, O1).
+seed(type, _-Same, S, _, O, PS, _, S1, _) :-
+    (   X = S
+    ;   X = O
+    ),
+    atom(X),
+    same_individual(Same, X, S1),
+    seed_fits(PS, S1).
+seed(trans(_), _-Same, S, _, O, PS, PO, S1, O1) :-
+    step_seed(Same, S, O, PS, PO, S1, O1).
+seed(trans(Transitives), Ctx, S, P, O, PS, PO, S1, O1) :-
+    member(T-TDeps, Transitives),
+    ord_memberchk(P, TDeps),
+    (   X = S, Y = O
+    ;   X = O, Y = S
+    ),
+    atom(X),
+    atom(Y),
+    chain_ends(Ctx, T, X, Y, PS, PO, S1, O1).
+
+%   An instance made by a triple `s q o` without transitivity: its
+%   subject and object are s and o, either way round, or their sameAs
+%   individuals.
+
+step_seed(Same, S, O, PS, PO, S1, O1) :-
+    (   X = S, Y = O
+    ;   X = O, Y = S
+    ),
+    atom(X),
+    same_individual(Same, X, S1),
+    seed_fits(PS, S1),
+    same_individual(Same, Y, O1),
+    seed_fits(PO, O1).
+
+%   Through a transitive T, an edge X→Y makes A T B true for A reaching
+%   X and B reached from Y (themselves included); the pattern's
+%   instance is A-B or B-A.  Both sets are computed once, filtered by
+%   the constants of the pattern, and must stay small.
+
+chain_ends(Model-Same, T, X, Y, PS, PO, S1, O1) :-
+    findall(A, ( same_individual(Same, X, A)
+               ; oro_holds(Model, A, T, X)
+               ), As0),
+    sort(As0, As),
+    findall(B, ( same_individual(Same, Y, B)
+               ; oro_holds(Model, Y, T, B)
+               ), Bs0),
+    sort(Bs0, Bs),
+    include(seed_fits(PS), As, SAs),
+    include(seed_fits(PO), Bs, OBs),
+    include(seed_fits(PS), Bs, SBs),
+    include(seed_fits(PO), As, OAs),
+    length(SAs, NSA),
+    length(OBs, NOB),
+    length(SBs, NSB),
+    length(OAs, NOA),
+    max_seeds(Max),
+    (   NSA * NOB + NSB * NOA =< Max
+    ->  true
+    ;   throw(oro_events_full)
+    ),
+    (   member(S1, SAs),
+        member(O1, OBs)
+    ;   member(S1, SBs),
+        member(O1, OAs)
+    ).
+
+%   seed_fits(+PatternTerm, +Value): Value may stand at a position of
+%   the pattern holding PatternTerm: a variable, the same resource, or
+%   a literal (compared by value when the pattern is solved).
+
+seed_fits(Term, Value) :-
+    (   var(Term)
+    ->  true
+    ;   Term == Value
+    ->  true
+    ;   Term = literal(_)
+    ->  Value = literal(_)
+    ).
+
+%   same_individual(+Same, +X, -Y): Y is X or one of its sameAs
+%   individuals (a literal is only itself).
+
+same_individual(Same, X, Y) :-
+    (   atom(X),
+        get_assoc(X, Same, Ys)
+    ->  member(Y, Ys)
+    ;   Y = X
+    ).
+
+		 /*******************************
+		 *           FIRINGS            *
+		 *******************************/
+
+%!  firings(+Type, +Trigger, +State0, +Outcome, -Contents, -Remove)
+%
+%   The events a watcher sends when its state goes from State0 by
+%   Outcome (ORO-SPEC §7.3), and whether it is then removed.
 
 firings(fact_checking, Trigger, State0, truth(R), Contents, Remove) :-
     (   State0 == truth(true)
@@ -794,12 +1436,9 @@ firings(fact_checking, Trigger, State0, truth(R), Contents, Remove) :-
     ->  Contents = [[]]
     ;   Contents = []
     ).
-firings(new_instance, Trigger, values(Before), values(Now), Contents, Remove) :-
-    ord_subtract(Now, Before, Added),
-    ord_subtract(Before, Now, Removed),
+firings(new_instance, Trigger, _, diff(Added, Removed), Contents, Remove) :-
     instance_firing(Trigger, Added, Removed, Contents, Remove).
-firings(new_class_instance, Trigger, values(Before), values(Now), Contents, Remove) :-
-    ord_subtract(Now, Before, Added),
+firings(new_class_instance, Trigger, _, diff(Added, _), Contents, Remove) :-
     (   Added \== [],
         memberchk(Trigger, [on_true, on_true_one_shot])
     ->  Contents = [Added],
