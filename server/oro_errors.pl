@@ -174,6 +174,6 @@ error_table(syntax_error(oro_sparql(Message, _Position)), invalid_query,
             [Message]).
 error_table(resource_error(oro_query_time_limit(Seconds)), server,
             'Query time limit exceeded: the query was stopped after ~w s \c
-             (setting oro_sparql:time_limit).', [Seconds]).
+             (setting oro_query:time_limit).', [Seconds]).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

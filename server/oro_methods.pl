@@ -70,7 +70,7 @@ oro_dispatch(Context, Method, Params, Reply) :-
     ),
     (   var(Error)
     ->  Reply = ok(Value)
-    ;   Error == oro_events_overflow        % the connection must close
+    ;   Error = oro_connection_end(_)       % the connection must close
     ->  throw(Error)
     ;   oro_error_response(Error, Name, Message),
         debug(oro(server), 'Error: ~q', [Error]),
@@ -731,30 +731,41 @@ agent_model(Agent, Model) :-
 
 %   The subscriber of a connection, made on first use: one for all its
 %   watchers, so its events keep their commit order; they are written
-%   on the connection under the connection's mutex.  If it falls too
-%   far behind, the connection is closed.
+%   on the connection under the connection's mutex.  The connection is
+%   ended (its thread gets oro_connection_end(Why)) when the subscriber
+%   falls too far behind, or when an event cannot be written (the
+%   client left, or did not read for write_timeout seconds): then the
+%   events still queued are dropped at once instead of each waiting
+%   for the same timeout.
 
 connection_subscriber(Context, Subscriber) :-
     Slot = Context.subscribers,
     arg(1, Slot, Subscribers),
     (   Subscribers = [Subscriber0]
     ->  Subscriber = Subscriber0
-    ;   Out = Context.out,
-        Mutex = Context.mutex,
-        Thread = Context.thread,
-        oro_subscriber_create(deliver_event(Out, Mutex), Subscriber,
-                              [ on_overflow(thread_signal(Thread,
-                                                          throw(oro_events_overflow)))
+    ;   Sink = sink(Context.out, Context.mutex, Context.thread, open),
+        oro_subscriber_create(deliver_event(Sink), Subscriber,
+                              [ on_overflow(end_connection(Sink, events_overflow))
                               ]),
         nb_setarg(1, Slot, [Subscriber])
     ).
 
-deliver_event(Out, Mutex, Id, Content) :-
-    event_content(Content, Value),
-    catch(with_mutex(Mutex, oro_write_event(Out, Id, Value)),
-          error(Error, _),
-          debug(oro(server), 'Event ~w not delivered: ~q', [Id, Error])).
-                                        % the client left: it is being cleaned up
+deliver_event(Sink, Id, Content) :-
+    Sink = sink(Out, Mutex, _, State),
+    (   State == open
+    ->  event_content(Content, Value),
+        catch(with_mutex(Mutex, oro_write_event(Out, Id, Value)),
+              error(Error, _),
+              ( debug(oro(server), 'Event ~w not delivered: ~q', [Id, Error]),
+                end_connection(Sink, write_failed)
+              ))
+    ;   true                            % the connection is ending
+    ).
+
+end_connection(Sink, Why) :-
+    nb_setarg(4, Sink, ended),
+    arg(3, Sink, Thread),
+    catch(thread_signal(Thread, throw(oro_connection_end(Why))), _, true).
 
 event_content([], void) :-
     !.
@@ -767,10 +778,18 @@ event_content(Values, list(Texts)) :-
 %   watchers only they subscribed to).
 
 oro_connection_closed(Context) :-
+    catch(release_subscribers(Context),
+          oro_connection_end(_),            % a late signal of its subscriber
+          oro_connection_closed(Context)).
+
+release_subscribers(Context) :-
     arg(1, Context.subscribers, Subscribers),
     forall(member(Subscriber, Subscribers),
            catch(oro_subscriber_destroy(Subscriber), E,
-                 print_message(warning, E))).
+                 ( E = oro_connection_end(_)
+                 ->  throw(E)
+                 ;   print_message(warning, E)
+                 ))).
 
 		 /*******************************
 		 *            HELPERS           *

@@ -20,7 +20,7 @@ query and find answer values as ORO does: resources contracted
 (`baboon`, `owl:Thing`), literals as their bare lexical form, blank
 nodes and unbound rows left out.  A malformed query is the library's
 `syntax_error(oro_sparql(Message, Position))`, a query running past
-the `oro_sparql:time_limit` setting its
+the `oro_query:time_limit` setting its
 `resource_error(oro_query_time_limit(Seconds))`; oro_errors names them.
 */
 

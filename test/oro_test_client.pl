@@ -1,5 +1,6 @@
 :- module(oro_test_client,
           [ oro_connect/2,              % +Port, -Conn
+            oro_connect/3,              % +Port, -Conn, +Options
             oro_disconnect/1,           % +Conn
             oro_send/3,                 % +Conn, +Method, +Params
             oro_send_raw/2,             % +Conn, +Data
@@ -8,7 +9,10 @@
             oro_call/4,                 % +Conn, +Method, +Params, -Reply
             oro_call/5,                 % +Conn, +Method, +Params, -Reply, +TimeoutSeconds
             oro_next_event/2,           % +Conn, -Event
-            oro_next_event/3            % +Conn, -Event, +TimeoutSeconds
+            oro_next_event/3,           % +Conn, -Event, +TimeoutSeconds
+            oro_send_data/2,            % +Conn, +Parts
+            oro_half_close/1,           % +Conn
+            oro_drain/3                 % +Conn, -Messages, +TimeoutSeconds
           ]).
 :- use_module(library(socket)).
 :- use_module(library(error)).
@@ -47,9 +51,20 @@ default_timeout(10).
 %
 %   Connect to the server on 127.0.0.1:Port.
 
-oro_connect(Port, oro_conn(In, Out, Events, Replies)) :-
+oro_connect(Port, Conn) :-
+    oro_connect(Port, Conn, []).
+
+%!  oro_connect(+Port, -Conn, +Options) is det.
+%
+%   As oro_connect/2, with the options of tcp_connect/3:
+%   nodelay(true) sends each flushed request at once (no Nagle delay
+%   on requests written in several parts, such as large pipelined
+%   batches).
+
+oro_connect(Port, oro_conn(In, Out, Events, Replies), Options) :-
     must_be(between(1, 65535), Port),
-    tcp_connect('127.0.0.1':Port, Pair, []),
+    must_be(list, Options),
+    tcp_connect('127.0.0.1':Port, Pair, Options),
     stream_pair(Pair, In, Out),
     set_stream(In, encoding(utf8)),
     set_stream(In, newline(posix)),
@@ -187,6 +202,78 @@ next_event(Conn, Deadline, Event) :-
 
 final_message(timeout).
 final_message(end_of_file).
+
+
+                 /*******************************
+                 *     RAW DATA, HALF CLOSE     *
+                 *******************************/
+
+%!  oro_send_data(+Conn, +Parts) is det.
+%
+%   Write Parts in order, then flush once.  Each part is text(Text),
+%   written as UTF-8, or octets(Bytes), Bytes a string or code list of
+%   codes 0..255 written as raw bytes (invalid UTF-8, NUL bytes).  For
+%   pipelined batches mixing well-formed and hostile requests; I/O
+%   errors (a server that closed the connection) are not caught.
+
+oro_send_data(oro_conn(_, Out, _, _), Parts) :-
+    must_be(list, Parts),
+    maplist(send_part(Out), Parts),
+    flush_output(Out).
+
+send_part(Out, text(Text)) :-
+    !,
+    must_be(text, Text),
+    write(Out, Text).
+send_part(Out, octets(Bytes)) :-
+    !,
+    (   string(Bytes)
+    ->  String = Bytes
+    ;   must_be(list(between(0, 255)), Bytes),
+        string_codes(String, Bytes)
+    ),
+    setup_call_cleanup(
+        set_stream(Out, encoding(octet)),
+        write(Out, String),
+        set_stream(Out, encoding(utf8))).
+send_part(_, Part) :-
+    domain_error(oro_data_part, Part).
+
+%!  oro_half_close(+Conn) is det.
+%
+%   Close the output side of Conn (the server reads end of file) and
+%   keep reading possible.  oro_disconnect/1 still releases Conn.
+
+oro_half_close(oro_conn(_, Out, _, _)) :-
+    catch(close(Out, [force(true)]), _, true).
+
+%!  oro_drain(+Conn, -Messages, +TimeoutSeconds) is det.
+%
+%   Read every message until the server closes Conn, for at most
+%   TimeoutSeconds in all.  Messages ends with `end_of_file`, or with
+%   `timeout` if the connection stayed open.  At most 100,000 messages
+%   are read (then the list ends with `timeout`).
+
+oro_drain(Conn, Messages, Timeout) :-
+    must_be_timeout(Timeout),
+    deadline(Timeout, Deadline),
+    drain_messages(Conn, Deadline, 100000, Messages).
+
+drain_messages(Conn, Deadline, Budget, Messages) :-
+    Conn = oro_conn(_, _, _, Replies),
+    (   Budget =< 0
+    ->  Messages = [timeout]
+    ;   (   thread_get_message(Replies, Message0, [timeout(0)])
+        ->  Message = Message0
+        ;   read_message(Conn, Deadline, Message)
+        ),
+        (   final_message(Message)
+        ->  Messages = [Message]
+        ;   Messages = [Message|Rest],
+            Budget1 is Budget - 1,
+            drain_messages(Conn, Deadline, Budget1, Rest)
+        )
+    ).
 
 
                  /*******************************

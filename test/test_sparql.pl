@@ -391,10 +391,10 @@ test(find_bad_filter, true(Pos-Start == 5-"Line 1, column 6:")) :-
     sub_string(Message, 0, 17, _, Start).
 test(find_filter_time_limited, error(resource_error(oro_query_time_limit(_)))) :-
     setup_call_cleanup(
-        set_setting(oro_sparql:time_limit, 0.2),
+        set_setting(oro_query:time_limit, 0.2),
         oro_find(myself, x, ["?x ?p ?y", "?a ?q ?b", "?c ?r ?d"],
                  ["CONCAT(STR(?y), STR(?b), STR(?d)) = 'none'"], _),
-        set_setting(oro_sparql:time_limit, 5)).
+        set_setting(oro_query:time_limit, 5)).
 test(json_select, true(JSON == "{\"head\":{\"vars\":[\"x\",\"n\"]},\"results\":{\"bindings\":[{\"x\":{\"type\":\"uri\",\"value\":\"http://kb.openrobots.org#lea\"},\"n\":{\"type\":\"literal\",\"value\":\"Lea\"}}]}}")) :-
     oro_sparql_json(myself, "SELECT ?x ?n WHERE { ?x :hasMother :mona ; :name ?n }", JSON).
 test(json_ask, true(JSON == "{\"head\":{},\"boolean\":false}")) :-
@@ -451,10 +451,10 @@ sq_heavy_ask("ASK { ?a ?p ?b . ?c ?q ?d . ?e ?r ?f FILTER(CONCAT(STR(?b), STR(?d
 
 sq_short_limit :-
     sq_zoo,
-    set_setting(oro_sparql:time_limit, 0.3).
+    set_setting(oro_query:time_limit, 0.3).
 
 sq_restore_limit :-
-    set_setting(oro_sparql:time_limit, 5),
+    set_setting(oro_query:time_limit, 5),
     sq_forget_data.
 
 :- begin_tests(sparql_time_limit, [setup(sq_short_limit), cleanup(sq_restore_limit)]).
@@ -470,12 +470,12 @@ test(stops, true(Formal-Fast == resource_error(oro_query_time_limit(0.3))-true))
 test(quick_queries_unaffected, true(R == ask(true))) :-
     oro_sparql(myself, "ASK { :kong a :Animal }", R).
 test(setting_default, true(D == 5)) :-
-    setting_property(oro_sparql:time_limit, default(D)).
+    setting_property(oro_query:time_limit, default(D)).
 test(no_limit, true(R == ask(false))) :-
     setup_call_cleanup(
-        set_setting(oro_sparql:time_limit, 0),
+        set_setting(oro_query:time_limit, 0),
         oro_sparql(myself, "ASK { ?x :age ?a FILTER(?a > 99) }", R),
-        set_setting(oro_sparql:time_limit, 0.3)).
+        set_setting(oro_query:time_limit, 0.3)).
 :- end_tests(sparql_time_limit).
 
 		 /*******************************
@@ -541,7 +541,7 @@ sq_start_server :-
 
 sq_stop_server :-
     test_server_stop,
-    set_setting(oro_sparql:time_limit, 5).
+    set_setting(oro_query:time_limit, 5).
 
 sq_fresh :-
     test_ok(reset, []).
@@ -640,7 +640,7 @@ test(error_reply_is_an_error, true(Kind == error)) :-
     functor(Reply, Kind, _).
 test(time_limit_while_others_served, true(Outcome == [fast, limited])) :-
     sq_fresh,
-    set_setting(oro_sparql:time_limit, 1.5),
+    set_setting(oro_query:time_limit, 1.5),
     test_server_port(Port),
     sq_heavy_ask(Q),
     setup_call_cleanup(
@@ -666,6 +666,6 @@ test(time_limit_while_others_served, true(Outcome == [fast, limited])) :-
         ),
         ( oro_disconnect(Slow),
           oro_disconnect(Quick),
-          set_setting(oro_sparql:time_limit, 5)
+          set_setting(oro_query:time_limit, 5)
         )).
 :- end_tests(sparql_socket).

@@ -287,13 +287,16 @@ update_triples(Model, Triples) :-
 %   True if every pattern holds in the inference closure of Model.  A
 %   complete statement must be entailed; a partial one must have a
 %   solution.  Patterns do not share variables.
+%
+%   @error resource_error(oro_query_time_limit(Seconds)) past the
+%          `oro_query:time_limit` setting.
 
 oro_check(Model0, Patterns) :-
     oro_resolve_model(Model0, Model),
     must_be(list, Patterns),
     maplist(pattern_triple, Patterns, Triples),
-    forall(member(Triple, Triples),
-           oro_pattern_holds(Model, Triple)).
+    oro_with_time_limit(forall(member(Triple, Triples),
+                               oro_pattern_holds(Model, Triple))).
 
 %!  oro_find(+Model, ?Var, +Patterns, -Values) is det.
 %
@@ -305,6 +308,8 @@ oro_check(Model0, Patterns) :-
 %   that no pattern uses gives `[]`.
 %
 %   @error domain_error(oro_variable, '') for an empty variable name.
+%   @error resource_error(oro_query_time_limit(Seconds)) past the
+%          `oro_query:time_limit` setting.
 
 oro_find(Model0, Var, Patterns, Values) :-
     oro_resolve_model(Model0, Model),

@@ -1,11 +1,13 @@
 :- module(oro_query,
           [ oro_solve/2,                % +Model, +Patterns
             oro_pattern_holds/2,        % +Model, +Pattern
-            oro_find_values/4           % +Model, ?Template, +Patterns, -Values
+            oro_find_values/4,          % +Model, ?Template, +Patterns, -Values
+            oro_with_time_limit/1       % :Goal
           ]).
 :- use_module(library(semweb/rdf_db)).
-:- use_module(library(lists)).
-:- use_module(library(apply)).
+:- use_module(library(settings)).
+:- use_module(library(time)).
+:- use_module(library(pairs)).
 :- use_module(oro_reason).
 
 /** <module> Query: conjunctive patterns over the inference closure
@@ -17,7 +19,40 @@ inference closure of a model (oro_holds/4), evaluating at each step
 the pattern that is cheapest given the variables bound so far, so a
 query with several patterns starts from its most selective one and
 does not scan.
+
+Every question (find, check, SPARQL) runs within the setting
+`oro_query:time_limit` (seconds, default 5; 0 for none): a join of
+unbound patterns can take hours, and must not hold a server worker and
+a core that long.  Past the limit, the question stops with
+`error(resource_error(oro_query_time_limit(Seconds)), _)`.
 */
+
+:- setting(time_limit, number, 5,
+           'Maximum time (seconds) one question (find, check, SPARQL \c
+            query) may run; 0 for no limit').
+
+:- meta_predicate oro_with_time_limit(0).
+
+%!  oro_with_time_limit(:Goal) is semidet.
+%
+%   Run Goal once, within the `time_limit` setting.
+%
+%   @error resource_error(oro_query_time_limit(Seconds)) if Goal runs
+%          longer.
+
+oro_with_time_limit(Goal) :-
+    setting(time_limit, Limit),
+    (   Limit =< 0
+    ->  once(Goal)
+    ;   catch(call_with_time_limit(Limit, Goal),
+              time_limit_exceeded,
+              throw(error(resource_error(oro_query_time_limit(Limit)), _)))
+    ).
+
+:- multifile prolog:error_message//1.
+
+prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
+    [ 'The query was stopped after its time limit (~w s)'-[Seconds] ].
 
 %!  oro_solve(+Model, +Patterns) is nondet.
 %
@@ -46,11 +81,31 @@ oro_pattern_holds(Model, rdf(S, P, O)) :-
 %   Values is the ordered set of the distinct instantiations of
 %   Template over the solutions of Patterns, leaving out those holding
 %   a blank node or an unbound variable.
+%
+%   @error resource_error(oro_query_time_limit(Seconds)) past the
+%          `time_limit` setting.
 
 oro_find_values(Model, Template, Patterns, Values) :-
-    findall(Template, oro_solve(Model, Patterns), Values0),
+    oro_with_time_limit(findall(Template, oro_solve(Model, Patterns), Values0)),
     sort(Values0, Values1),
-    exclude(unusable_value, Values1, Values).
+    usable_values(Values1, Values).
+
+%   usable_values(+Values0, -Values): Values0 less the values holding
+%   a blank node or an unbound variable.  The usual value, an IRI, is
+%   decided by one test.
+
+usable_values([], []).
+usable_values([Value|Values0], Values) :-
+    (   atom(Value)
+    ->  (   rdf_is_bnode(Value)
+        ->  Values = Values1
+        ;   Values = [Value|Values1]
+        )
+    ;   unusable_value(Value)
+    ->  Values = Values1
+    ;   Values = [Value|Values1]
+    ),
+    usable_values(Values0, Values1).
 
 unusable_value(Value) :-
     \+ ground(Value),

@@ -12,8 +12,6 @@
 :- use_module(library(pairs)).
 :- use_module(library(ordsets)).
 :- use_module(library(assoc)).
-:- use_module(library(settings)).
-:- use_module(library(time)).
 :- use_module(library(solution_sequences)).
 :- use_module(library(uri)).
 :- use_module(library(date)).
@@ -23,6 +21,7 @@
 :- use_module(oro_reason).
 :- use_module(oro_parse).
 :- use_module(oro_knowledge, [oro_find/4]).
+:- use_module(oro_query, [oro_with_time_limit/1]).
 
 :- if(exists_source(library(pcre))).
 :- use_module(library(pcre)).
@@ -100,8 +99,9 @@ Evaluation:
     to bind are pushed into it, so FILTER scoping, OPTIONAL and MINUS
     keep their bottom-up meaning.  Without ORDER BY or aggregates,
     solutions stream: LIMIT and ASK stop the evaluation early.
-  - A query is bounded by the setting `oro_sparql:time_limit` (seconds,
-    default 5; 0 for none): past it, evaluation stops with
+  - A query, its parsing included, is bounded by the setting
+    `oro_query:time_limit` (seconds, default 5; 0 for none), as find
+    and check are: past it, evaluation stops with
     `error(resource_error(oro_query_time_limit(Seconds)), _)`.  Queries
     run in the caller's thread (a server worker), so other clients are
     not held up.
@@ -119,9 +119,6 @@ Errors are ISO-shaped: a malformed query raises
 is one line naming the line and column and Position is the 0-based
 character offset in the query text.
 */
-
-:- setting(time_limit, number, 5,
-           'Maximum time (seconds) one SPARQL query may run; 0 for no limit').
 
 :- rdf_meta
     boolean_term(+, o),
@@ -176,8 +173,9 @@ oro_sparql_parse(Text, Query) :-
 
 oro_sparql(Model0, Text, Result) :-
     oro_resolve_model(Model0, Model),
-    oro_sparql_parse(Text, Query),
-    with_time_limit(run_query(Model, Query, Result)).
+    oro_with_time_limit(( oro_sparql_parse(Text, Query),
+                          run_query(Model, Query, Result)
+                        )).
 
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %
@@ -202,13 +200,14 @@ oro_sparql_json(Model, Text, JSON) :-
 oro_query_values(Model0, Key, Text, Values) :-
     oro_resolve_model(Model0, Model),
     must_be(text, Key),
-    oro_sparql_parse(Text, Query),
-    (   Query = select(_, _, _, _)
-    ->  true
-    ;   sparql_error("a SELECT query is expected", 0, Text)
-    ),
     key_name(Key, Name),
-    with_time_limit(run_query(Model, Query, select(_, Rows))),
+    oro_with_time_limit(( oro_sparql_parse(Text, Query),
+                          (   Query = select(_, _, _, _)
+                          ->  true
+                          ;   sparql_error("a SELECT query is expected", 0, Text)
+                          ),
+                          run_query(Model, Query, select(_, Rows))
+                        )),
     findall(V, ( member(Row, Rows),
                  memberchk(Name-V, Row),
                  \+ rdf_is_bnode(V)
@@ -250,8 +249,7 @@ oro_find(Model0, Var, Patterns, Filters, Values) :-
         ;   true
         ),
         Values = []
-    ;   maplist(parse_filter, Filters, Exprs),
-        copy_term(Var-Patterns, Var1-Patterns1),
+    ;   copy_term(Var-Patterns, Var1-Patterns1),
         oro_statements(Patterns1, Triples, Bindings),
         (   text(Var1)
         ->  find_variable_name(Var1, Name)
@@ -262,11 +260,13 @@ oro_find(Model0, Var, Patterns, Filters, Values) :-
         maplist(bind_name, Bindings),
         term_variables(Triples, Anonymous),
         foldl(name_anonymous, Anonymous, 1, _),
-        conjunction(Exprs, Filter),
         Pattern = filter(Filter, bgp(Triples)),
         Query = select([var(Name)], all, Pattern,
                        mods(false, none, [], [], 0, inf, none)),
-        with_time_limit(run_query(Model, Query, select(_, Rows))),
+        oro_with_time_limit(( maplist(parse_filter, Filters, Exprs),
+                              conjunction(Exprs, Filter),
+                              run_query(Model, Query, select(_, Rows))
+                            )),
         findall(V, ( member(Row, Rows),
                      memberchk(Name-V, Row),
                      \+ rdf_is_bnode(V)
@@ -296,20 +296,6 @@ name_anonymous(var(Name), N0, N) :-
 parse_filter(Text, Expr) :-
     parse_text(expression, Text, Expr).
 
-%   with_time_limit(:Goal): run Goal once, within the time_limit
-%   setting.
-
-:- meta_predicate with_time_limit(0).
-
-with_time_limit(Goal) :-
-    setting(time_limit, Limit),
-    (   Limit =< 0
-    ->  once(Goal)
-    ;   catch(call_with_time_limit(Limit, Goal),
-              time_limit_exceeded,
-              throw(error(resource_error(oro_query_time_limit(Limit)), _)))
-    ).
-
 		 /*******************************
 		 *           MESSAGES           *
 		 *******************************/
@@ -318,8 +304,6 @@ with_time_limit(Goal) :-
 
 prolog:error_message(syntax_error(oro_sparql(Message, _Position))) -->
     [ 'SPARQL: ~w'-[Message] ].
-prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
-    [ 'The query was stopped after its time limit (~w s)'-[Seconds] ].
 
 		 /*******************************
 		 *           TOKENIZER          *
