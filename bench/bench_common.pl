@@ -2,15 +2,23 @@
           [ bench_machine/0,
             bench_list_option/3,        % ?Option, +Options, +Default
             bench_with_server/4,        % +Args, -Port, -Pid, :Goal
+            bench_with_script/5,        % +Script, +Args, -Port, -Pid, :Goal
+            bench_server_script/1,      % -File
+            bench_memory/2,             % +Pid, -Memory
             bench_with_connection/3,    % +Port, -Conn, :Goal
             bench_send/3,               % +Conn, +Method, +Params
             bench_receive/3,            % +Conn, -Message, +Timeout
             bench_call/3,               % +Conn, +Method, +Params
             bench_call/4,               % +Conn, +Method, +Params, ?Value
             bench_call/5,               % +Conn, +Method, +Params, ?Value, +Timeout
+            bench_request/5,            % +Conn, +Method, +Params, -Reply, +Timeout
+            bench_echo_start/2,         % +Port, -Echo
+            bench_echo_stop/1,          % +Echo
             bench_time/2,               % :Goal, -Micros
             bench_measure/5,            % +N, ?I, :Goal, :Prepare, -Times
+            bench_measure/6,            % +N, +Seconds, ?I, :Goal, :Prepare, -Times
             bench_summary/3,            % +Times, -Median, -P99
+            bench_stats/2,              % +Times, -Stats
             bench_micros/2,             % +Micros, -Text
             bench_micros/3,             % +Micros, -Text, +Options
             bench_header/1,             % +SizeColumn
@@ -19,7 +27,8 @@
             bench_row/5,                % +Name, +Size, +Median, +P99, +PerSecond
             bench_row/6,                % +Name, +Size, +Median, +P99, +PerSecond, +Options
             bench_world/2,              % +Triples, -Statements
-            bench_batches/3             % +List, +N, -Batches
+            bench_batches/3,            % +List, +N, -Batches
+            bench_log_requests/2        % +File, -Requests
           ]).
 :- use_module(library(process)).
 :- use_module(library(socket)).
@@ -28,12 +37,16 @@
 :- use_module(library(lists)).
 :- use_module(library(option)).
 :- use_module(library(predicate_options)).
+:- use_module(library(error)).
+:- use_module(library(http/json)).
 
 :- meta_predicate
     bench_with_server(+, -, -, 0),
+    bench_with_script(+, +, -, -, 0),
     bench_with_connection(+, -, 0),
     bench_time(0, -),
-    bench_measure(+, ?, 0, 0, -).
+    bench_measure(+, ?, 0, 0, -),
+    bench_measure(+, +, ?, 0, 0, -).
 
 :- predicate_options(bench_micros/3, 3,
                      [ units(oneof([us, auto]))
@@ -54,13 +67,19 @@ scripts; this module holds what they have in common:
   - the machine line printed first (SWI-Prolog version and CPU);
   - a command-line option taking one number or several
     (`--sizes=10000,100000`);
-  - the real server, server/oro_server.pl, started as a child process
-    on a free port and stopped afterwards;
+  - the real server, server/oro_server.pl (or another script printing
+    its port), started as a child process on a free port and stopped
+    afterwards, and the memory of a child process (VmRSS, VmHWM);
   - a small socket client: send a request, read its `ok`, `error` or
-    `event` message, optionally with a timeout;
-  - timing a goal, N samples of it, their median and 99th percentile;
+    `event` message, optionally with a timeout, optionally skipping
+    events;
+  - the echo server, the floor of every socket figure: oro's framing
+    and nothing else;
+  - timing a goal, N samples of it (optionally within a time budget),
+    their median, 99th percentile and maximum;
   - the common table (operation, size, median, p99, per second);
-  - bench.pl's synthetic robot world, 4 triples an object.
+  - bench.pl's synthetic robot world, 4 triples an object;
+  - the requests of a recorded ORO server log, to replay it.
 
 The client is deliberately leaner than test/oro_test_client.pl: a
 request waits for its reply with a blocking read unless a timeout is
@@ -128,9 +147,21 @@ term_list(Term, List) :-
 %   @error bench_no_port(Line) if the first line names no port.
 
 bench_with_server(Args, Port, Pid, Goal) :-
-    server_script(Server),
+    bench_server_script(Server),
+    bench_with_script(Server, ['--port=0'|Args], Port, Pid, Goal).
+
+%!  bench_with_script(+Script, +Args, -Port, -Pid, :Goal) is semidet.
+%
+%   Run once(Goal) while `swipl Script Args...` runs as a child process
+%   Pid whose first line on standard output ends with `:Port` (as the
+%   server's `oro listening on 127.0.0.1:Port`).  The child is killed
+%   afterwards, whatever Goal did.
+%
+%   @error bench_no_port(Line) if the first line names no port.
+
+bench_with_script(Script, Args, Port, Pid, Goal) :-
     setup_call_cleanup(
-        process_create(path(swipl), [Server, '--port=0'|Args],
+        process_create(path(swipl), [Script|Args],
                        [stdout(pipe(Out)), process(Pid)]),
         ( read_line_to_string(Out, Line),
           server_port(Line, Port),
@@ -141,10 +172,40 @@ bench_with_server(Args, Port, Pid, Goal) :-
           close(Out)
         )).
 
-server_script(Server) :-
+%!  bench_server_script(-File) is det.
+%
+%   File is the absolute path of server/oro_server.pl.
+
+bench_server_script(Server) :-
     module_property(bench_common, file(Here)),
     absolute_file_name('../server/oro_server.pl', Server,
                        [relative_to(Here), access(read)]).
+
+%!  bench_memory(+Pid, -Memory) is det.
+%
+%   Memory of the process Pid from `/proc/Pid/status`, as a dict
+%   `memory{rss_kb:RSS, hwm_kb:HWM}`: its resident set now (VmRSS) and
+%   at its peak (VmHWM), in kB.  A value that cannot be read is `-`.
+
+bench_memory(Pid, memory{rss_kb:RSS, hwm_kb:HWM}) :-
+    format(atom(File), '/proc/~w/status', [Pid]),
+    (   catch(read_file_to_string(File, Status, []), _, fail)
+    ->  status_kb(Status, "VmRSS:", RSS),
+        status_kb(Status, "VmHWM:", HWM)
+    ;   RSS = (-),
+        HWM = (-)
+    ).
+
+status_kb(Status, Key, KB) :-
+    split_string(Status, "\n", "", Lines),
+    (   member(Line, Lines),
+        string_concat(Key, Rest, Line),
+        split_string(Rest, " \t", " \t", Parts),
+        exclude(==(""), Parts, [Text|_]),
+        number_string(KB0, Text)
+    ->  KB = KB0
+    ;   KB = (-)
+    ).
 
 server_port(Line, Port) :-
     (   string(Line),
@@ -287,6 +348,105 @@ bench_call(Conn, Method, Params, Value, Timeout) :-
     ;   throw(bench_failed(Method, Params, Reply))
     ).
 
+%!  bench_request(+Conn, +Method, +Params, -Reply, +Timeout) is det.
+%
+%   Send a request (bench_send/3) and read messages until its reply:
+%   the first message that is not an event.  Reply is
+%   reply(Message, Events): Message as of bench_receive/3 (`timeout` if
+%   nothing but events came within Timeout seconds of the request) and
+%   Events the number of events read before it.  For connections that
+%   may receive events at any time, such as a replayed session.
+
+bench_request(Conn, Method, Params, reply(Message, Events), Timeout) :-
+    bench_send(Conn, Method, Params),
+    (   Timeout == infinite
+    ->  Deadline = infinite
+    ;   get_time(Now),
+        Deadline is Now + Timeout
+    ),
+    skip_events(Conn, Deadline, 0, Message, Events).
+
+skip_events(Conn, Deadline, E0, Message, Events) :-
+    (   Deadline == infinite
+    ->  Left = infinite
+    ;   get_time(Now),
+        Left is max(0, Deadline - Now)
+    ),
+    bench_receive(Conn, Message0, Left),
+    (   Message0 = event(_, _)
+    ->  E1 is E0 + 1,
+        skip_events(Conn, Deadline, E1, Message, Events)
+    ;   Message = Message0,
+        Events = E0
+    ).
+
+		 /*******************************
+		 *         ECHO SERVER          *
+		 *******************************/
+
+%!  bench_echo_start(+Port, -Echo) is det.
+%
+%   Start the floor of the socket figures in this process: a trivial
+%   server on 127.0.0.1:Port (0: a free port) with oro's framing and
+%   none of its work.  An accept thread gives each connection a thread
+%   of its own (TCP_NODELAY, UTF-8, as the real server); it reads lines
+%   until `#end#` and answers every request `ok`, `true`, `#end#`.
+%   Echo is a handle for bench_echo_stop/1; Echo.port is the port.
+
+bench_echo_start(Port0, echo{port:Port, socket:Socket, accept:Accept}) :-
+    must_be(nonneg, Port0),
+    tcp_socket(Socket),
+    tcp_setopt(Socket, reuseaddr),
+    (   Port0 =:= 0
+    ->  tcp_bind(Socket, '127.0.0.1':Port)
+    ;   Port = Port0,
+        tcp_bind(Socket, '127.0.0.1':Port)
+    ),
+    tcp_listen(Socket, 64),
+    thread_create(echo_accept(Socket), Accept, []).
+
+%!  bench_echo_stop(+Echo) is det.
+%
+%   Stop accepting connections and release the echo server's socket.
+%   Connections in progress end when their clients close them.
+
+bench_echo_stop(Echo) :-
+    catch(thread_signal(Echo.accept, throw(bench_echo_stop)), _, true),
+    thread_join(Echo.accept, _),
+    catch(tcp_close_socket(Echo.socket), _, true).
+
+echo_accept(Socket) :-
+    catch(echo_accept_loop(Socket), bench_echo_stop, true).
+
+echo_accept_loop(Socket) :-
+    repeat,
+    tcp_accept(Socket, Client, _Peer),
+    thread_create(echo_connection(Client), _, [detached(true)]),
+    fail.
+
+echo_connection(Client) :-
+    tcp_setopt(Client, nodelay),
+    setup_call_cleanup(
+        tcp_open_socket(Client, Pair),
+        ( stream_pair(Pair, In, Out),
+          set_stream(In, encoding(utf8)),
+          set_stream(Out, encoding(utf8)),
+          set_stream(Out, newline(posix)),
+          catch(echo_requests(In, Out), _, true)
+        ),
+        close(Pair, [force(true)])).
+
+echo_requests(In, Out) :-
+    read_line_to_string(In, Line),
+    (   Line == end_of_file
+    ->  true
+    ;   Line == "#end#"
+    ->  format(Out, "ok~ntrue~n#end#~n", []),
+        flush_output(Out),
+        echo_requests(In, Out)
+    ;   echo_requests(In, Out)
+    ).
+
 		 /*******************************
 		 *            TIMING            *
 		 *******************************/
@@ -314,6 +474,42 @@ bench_measure(N, I, Goal, Prepare, Times) :-
                  once(Prepare),
                  bench_time(Goal, T)
                ), Times).
+
+%!  bench_measure(+N, +Seconds, ?I, :Goal, :Prepare, -Times) is det.
+%
+%   As bench_measure/5, but stop taking samples once Seconds have
+%   passed and at least 20 samples (or N, if fewer) were taken: slow
+%   operations on large stores get fewer samples instead of holding
+%   up the run.
+
+bench_measure(N, Seconds, I, Goal, Prepare, Times) :-
+    get_time(T0),
+    Deadline is T0 + Seconds,
+    findall(T, ( between(1, N, I),
+                 (   I > 20,
+                     get_time(Now),
+                     Now > Deadline
+                 ->  !,
+                     fail
+                 ;   true
+                 ),
+                 once(Prepare),
+                 bench_time(Goal, T)
+               ), Times).
+
+%!  bench_stats(+Times, -Stats) is det.
+%
+%   Stats summarises a list of times (microseconds) as a dict
+%   `stats{n:N, median:Median, p99:P99, max:Max}`, the median and
+%   99th percentile as of bench_summary/3; for an empty list N is 0 and
+%   the others are `-`.
+
+bench_stats([], stats{n:0, median:(-), p99:(-), max:(-)}) :-
+    !.
+bench_stats(Times, stats{n:N, median:Median, p99:P99, max:Max}) :-
+    length(Times, N),
+    bench_summary(Times, Median, P99),
+    max_list(Times, Max).
 
 %!  bench_summary(+Times, -Median, -P99) is det.
 %
@@ -454,3 +650,59 @@ bench_batches(List, N, [Batch|Batches]) :-
 bench_batches([], _, []) :-
     !.
 bench_batches(List, _, [List]).
+
+		 /*******************************
+		 *        RECORDED LOGS         *
+		 *******************************/
+
+%!  bench_log_requests(+File, -Requests) is det.
+%
+%   Requests are the requests of a recorded ORO server log (such as
+%   ../shared/workloads/robot-session-2011.log), in order: one
+%   request(Thread, Method, Params) for each `[thread N] >> Got
+%   incoming request: Method(Args)` line.  Thread is the text of the
+%   thread tag (`""` if there is none), Method a string and Params the
+%   arguments, each written back as one JSON line: a parameter as
+%   bench_send/3 sends it.  The arguments are JSON-like literals; a
+%   line whose arguments do not parse is bad(Line).
+
+bench_log_requests(File, Requests) :-
+    read_file_to_string(File, Text, [encoding(utf8)]),
+    split_string(Text, "\n", "\r", Lines),
+    convlist(log_request, Lines, Requests).
+
+log_request(Line, Request) :-
+    sub_string(Line, _, _, After, "Got incoming request: "),
+    !,
+    sub_string(Line, _, After, 0, Call),
+    (   log_thread(Line, Thread0)
+    ->  Thread = Thread0
+    ;   Thread = ""
+    ),
+    (   sub_string(Call, Open, 1, _, "("),
+        !,
+        sub_string(Call, 0, Open, _, Method),
+        string_concat(Head, ")", Call),
+        ArgsStart is Open + 1,
+        sub_string(Head, ArgsStart, _, 0, ArgsText),
+        atomic_list_concat(['[', ArgsText, ']'], JSON),
+        catch(atom_json_term(JSON, Args, [value_string_as(string)]), _, fail),
+        is_list(Args),
+        maplist(json_line, Args, Params)
+    ->  Request = request(Thread, Method, Params)
+    ;   Request = bad(Line)
+    ).
+
+log_thread(Line, Thread) :-
+    sub_string(Line, B, _, _, "[thread "),
+    !,
+    Start is B + 8,
+    sub_string(Line, Start, _, 0, Rest),
+    sub_string(Rest, L, _, _, "]"),
+    !,
+    sub_string(Rest, 0, L, _, Thread).
+
+json_line(Arg, Line) :-
+    with_output_to(string(Line),
+                   json_write(current_output, Arg, [width(0)])),
+    \+ sub_string(Line, _, _, _, "\n").
