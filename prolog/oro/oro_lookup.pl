@@ -125,17 +125,12 @@ label_match(Model, Text, Resource) :-
     \+ rdf_is_bnode(Resource),
     once(oro_asserted(Model, Resource, LabelP, literal(Value))).
 
-%   Local names: the resources of the store whose local name is Text.
-%   This scans the resources; see bench/ for its cost.
+%   Local names: the resources of the store whose local name is Text,
+%   ignoring case, found through the store's name index.
 
 name_match(Model, Text, Resource) :-
     downcase_atom(Text, Lower),
-    (   rdf_resource(Resource)
-    ;   rdf_current_predicate(Resource)
-    ),
-    \+ rdf_is_bnode(Resource),
-    oro_local_name(Resource, Local),
-    downcase_atom(Local, Lower),
+    oro_named(Lower, Resource),
     oro_exists(Model, Resource).
 
 matches_as(_, instance, _, _) :-

@@ -1,5 +1,6 @@
 :- module(oro_store,
           [ oro_graph/3,                % +Model, +Layer, -Graph
+            oro_shared_graph/2,         % +Layer, -Graph
             oro_graph_layer/3,          % ?Graph, ?Model, ?Layer
             oro_model/1,                % ?Model
             oro_create_model/1,         % +Model
@@ -21,7 +22,8 @@
             oro_store_reset/0,
             oro_store_attach/1,         % +Directory
             oro_store_detach/0,
-            oro_scratch_graph/1         % +Graph
+            oro_scratch_graph/1,        % +Graph
+            oro_named/2                 % +LowerLocalName, -IRI
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -30,6 +32,7 @@
 :- use_module(library(lists)).
 :- use_module(library(debug)).
 :- use_module(oro_persist).
+:- use_module(oro_names, [oro_local_name/2]).
 
 :- meta_predicate
     oro_store_write(+, 0).
@@ -57,17 +60,37 @@ the reasoner uses to know when its schema closures are stale.
 :- dynamic
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
-    ontology_graph/1.               % Graph
+    ontology_graph/1,               % Graph
+    named/2,                        % LowerLocalName, IRI
+    indexed/1.                      % IRI
 
 %!  oro_graph(+Model, +Layer, -Graph) is det.
 %
 %   The rdf_db graph holding Layer of Model.  Layer is `mask` or
 %   profile(Profile) with Profile one of `longterm`, `shortterm` or
-%   `episodic`.  This is the only predicate that spells graph names.
+%   `episodic`.  With oro_shared_graph/2, the only predicate that
+%   spells graph names (through graph_name/3).
 
 oro_graph(Model, Layer, Graph) :-
     layer_name(Layer, Name),
-    atomic_list_concat(['oro:', Model, '#', Name], Graph).
+    graph_name(Model, Name, Graph).
+
+%!  oro_shared_graph(+Layer, -Graph) is det.
+%
+%   The rdf_db graph of a layer that belongs to no model: ontology(N),
+%   the N-th graph of the ontology layer, or scratch(Name), a temporary
+%   graph (see oro_scratch_graph/1).  Neither can be taken for a model
+%   graph: their layer names are none of a model's.
+
+oro_shared_graph(ontology(N), Graph) :-
+    must_be(positive_integer, N),
+    graph_name(ontology, N, Graph).
+oro_shared_graph(scratch(Name), Graph) :-
+    must_be(atom, Name),
+    graph_name(scratch, Name, Graph).
+
+graph_name(Owner, Layer, Graph) :-
+    atomic_list_concat(['oro:', Owner, '#', Layer], Graph).
 
 layer_name(profile(Profile), Profile).
 layer_name(mask, mask).
@@ -253,6 +276,7 @@ oro_store_assert(Model, Triples, Profile) :-
 
 assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     note_schema_change(P, O),
+    index_names(S, P, O),
     (   rdf(S, P, O, Mask)
     ->  rdf_retractall(S, P, O, Mask)
     ;   true
@@ -396,10 +420,11 @@ oro_load_ontology(File) :-
     with_mutex(oro_write,
                ( aggregate_all(count, ontology_graph(_), N0),
                  N is N0 + 1,
-                 format(atom(Graph), 'oro:ontology#~d', [N]),
+                 oro_shared_graph(ontology(N), Graph),
                  oro_persist_exclude(Graph),
                  rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
                  assertz(ontology_graph(Graph)),
+                 index_graph_names(Graph),
                  flag(oro_schema_generation, G, G+1)
                )).
 
@@ -448,6 +473,8 @@ oro_store_reset :-
     with_mutex(oro_write,
                ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
+                 retractall(named(_, _)),
+                 retractall(indexed(_)),
                  retractall(model_graph(_, _, _)),
                  retractall(model_alias(_, _)),
                  retractall(ontology_graph(_)),
@@ -472,11 +499,14 @@ oro_store_attach(Dir) :-
                  forall(( rdf_graph(Graph),
                           model_graph_name(Graph, Model)
                         ),
-                        create_model(Model)),
+                        ( create_model(Model),
+                          index_graph_names(Graph)
+                        )),
                  flag(oro_schema_generation, G, G+1)
                )).
 
-%   model_graph_name(+Graph, -Model): Graph is named by oro_graph/3.
+%   model_graph_name(+Graph, -Model): Graph is named by oro_graph/3
+%   (the inverse of graph_name/3 for a model's layers).
 
 model_graph_name(Graph, Model) :-
     atom_concat('oro:', Rest, Graph),
@@ -502,3 +532,49 @@ oro_store_detach :-
 
 oro_scratch_graph(Graph) :-
     oro_persist_exclude(Graph).
+
+
+		 /*******************************
+		 *          NAME INDEX          *
+		 *******************************/
+
+%!  oro_named(+LowerLocalName, -IRI) is nondet.
+%
+%   IRI has LowerLocalName as its local name (see oro_local_name/2),
+%   ignoring case.  The index holds every IRI the store was given
+%   (subject, predicate or object), models and ontology layer; it may
+%   hold IRIs whose triples are gone since: check with the model.
+%
+%   rdf_db has no index on local names, and scanning its resources
+%   costs 30 ms at 10k triples, 350 ms at 1M (bench/bench_full.pl,
+%   lookup).  The index is kept by the write path itself (a hash
+%   lookup per IRI; an rdf_monitor/2 callback would cost 3 us a
+%   triple), and by a scan of what rdf_load/2 and a restored database
+%   bring.  Entries are only dropped by a reset: the index grows no
+%   faster than rdf_db's resource table, which keeps every IRI it saw.
+
+oro_named(Lower, IRI) :-
+    named(Lower, IRI).
+
+index_names(S, P, O) :-
+    index_name(S),
+    index_name(P),
+    (   atom(O)
+    ->  index_name(O)
+    ;   true
+    ).
+
+index_name(R) :-
+    (   indexed(R)
+    ->  true
+    ;   rdf_is_bnode(R)
+    ->  true
+    ;   oro_local_name(R, Local),
+        downcase_atom(Local, Lower),
+        assertz(indexed(R)),
+        assertz(named(Lower, R))
+    ).
+
+index_graph_names(Graph) :-
+    forall(rdf(S, P, O, Graph),
+           index_names(S, P, O)).
