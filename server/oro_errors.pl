@@ -150,10 +150,8 @@ error_table(domain_error(oro_revision_policy, Text), invalid_policy,
             'The revision policy must be a JSON object: ~w', [Text]).
 error_table(domain_error(oro_memory_profile, Profile), illegal_argument,
             'Unknown memory profile ~w.', [Profile]).
-error_table(domain_error(oro_find_variables, N), server,
-            'One unbound variable must be given to execute a \'find\' \c
-             (~d given).', [N]) :-
-    N =:= 0.
+error_table(domain_error(oro_find_variables, 0), server,
+            'One unbound variable must be given to execute a \'find\'', []).
 error_table(domain_error(oro_find_variables, _), not_implemented,
             'find can be executed only on a single agent model', []).
 error_table(domain_error(oro_find_agents, _), not_implemented,

@@ -21,11 +21,9 @@
         discriminate returns separates the individuals as it claims,
         and no property separates them better; similarities hold for
         both individuals, differences for one only;
-      - every vector of §13.9 and §10 over a real socket, with the
-        server started in-process on a free port (the error vectors
-        run once server/oro_errors.pl maps existence_error(concept, _)
-        and domain_error(oro_comparable, _); until then they are
-        skipped with a notice);
+      - every vector of §13.9 and §10 over a real socket, error
+        replies included, with the server started in-process on a free
+        port;
       - the seed example on the OpenRobots ontology
         (../shared/ontologies/oro.owl, skipped with a notice if absent)
         and on oro's own common-sense ontology.
@@ -777,29 +775,6 @@ cat_discriminate_after(Adds, Set, Value) :-
     cat_session(Setup, discriminate, [Set], Reply),
     cat_discriminate_value(Reply, Value).
 
-%   The error table of the server maps the categorization errors (the
-%   lead adds them to server/oro_errors.pl); until then the socket
-%   error vectors are skipped with a notice.
-
-cat_errors_mapped :-
-    (   nb_current(cat_errors_notice, done)
-    ->  fail
-    ;   forall(member(F, [ existence_error(concept, x),
-                           domain_error(oro_comparable, kinds(instance, class)),
-                           domain_error(oro_comparable, not_individuals)
-                         ]),
-               ( oro_errors:oro_error_response(error(F, _), Name, _),
-                 Name \== "laas.openrobots.ontology.exceptions.OntologyServerException"
-               ))
-    ->  true
-    ;   nb_setval(cat_errors_notice, done),
-        print_message(informational,
-                      format('test_categorization: server/oro_errors.pl does \c
-                              not map the categorization errors yet: socket \c
-                              error vectors skipped', [])),
-        fail
-    ).
-
 :- begin_tests(categorization_protocol,
                [ setup(cat_start_testsuite),
                  cleanup(cat_stop)
@@ -930,37 +905,27 @@ test(discriminate_for_unknown_agent,
                          "I couldn't find the agent nobody."))) :-
     cat_session([], discriminateForAgent, ["nobody", "[cow, gorilla]"], Reply).
 test(similarities_instance_class,
-     [ condition(cat_errors_mapped),
-       true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
-                           "Can not compare resources of different kind \c
-                            (a INSTANCE and a CLASS were provided)."))
-     ]) :-
+     true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
+                         "Can not compare resources of different kind \c
+                          (a INSTANCE and a CLASS were provided)."))) :-
     cat_session([], getSimilarities, ["baboon", "Monkey"], Reply).
 test(differences_instance_class,
-     [ condition(cat_errors_mapped),
-       true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
-                           "Can not compare resources of different kind \c
-                            (a INSTANCE and a CLASS were provided)."))
-     ]) :-
+     true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
+                         "Can not compare resources of different kind \c
+                          (a INSTANCE and a CLASS were provided)."))) :-
     cat_session([], getDifferences, ["baboon", "Monkey"], Reply).
 test(similarities_two_classes,
-     [ condition(cat_errors_mapped),
-       true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
-                           "Only the comparison between instances \c
-                            (individuals) is currently implemented"))
-     ]) :-
+     true(Reply == error("laas.openrobots.ontology.exceptions.NotComparableException",
+                         "Only the comparison between instances \c
+                          (individuals) is currently implemented"))) :-
     cat_session([], getSimilarities, ["Monkey", "Animal"], Reply).
 test(similarities_unknown,
-     [ condition(cat_errors_mapped),
-       true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
-                           "Concept i_d_ont_exist doesn't exist in the ontology."))
-     ]) :-
+     true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
+                         "Concept i_d_ont_exist doesn't exist in the ontology."))) :-
     cat_session([], getSimilarities, ["i_d_ont_exist", "cow"], Reply).
 test(discriminate_unknown,
-     [ condition(cat_errors_mapped),
-       true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
-                           "Concept i_d_ont_exist doesn't exist in the ontology."))
-     ]) :-
+     true(Reply == error("com.hp.hpl.jena.shared.NotFoundException",
+                         "Concept i_d_ont_exist doesn't exist in the ontology."))) :-
     cat_session([], discriminate, ["[cow, i_d_ont_exist]"], Reply).
 test(wrong_parameter, true(Name == "NotImplementedException")) :-
     cat_session([], discriminate, ["cow"], error(Name, _)).

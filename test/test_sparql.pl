@@ -546,14 +546,6 @@ sq_stop_server :-
 sq_fresh :-
     test_ok(reset, []).
 
-%   The error table names SPARQL errors once the lead adds the clauses
-%   (server/oro_errors.pl); until then these two tests are skipped.
-
-sq_error_table_knows_sparql :-
-    catch(clause(oro_errors:error_table(syntax_error(oro_sparql(_, _)), _, _, _), _),
-          _, fail),
-    !.
-
 :- begin_tests(sparql_socket, [setup(sq_start_server), cleanup(sq_stop_server)]).
 
 %   ORO-SPEC §13.3
@@ -594,6 +586,16 @@ test(find_null_filters, true(Xs == ["baboon", "gorilla"])) :-
 test(find_kb_api_filters, true(Xs == ["gorilla"])) :-
     sq_fresh,
     test_set_call(find, ['[?x]', '[?x rdf:type Monkey, ?x weight ?w]', '[?w > 50]', '[]'], Xs).
+test(find_kb_api_two_variables,
+     true(R == error("laas.openrobots.ontology.exceptions.NotImplementedException",
+                     "find can be executed only on a single agent model"))) :-
+    sq_fresh,
+    test_call(find, ['[?x, ?y]', '[?x rdf:type Monkey, ?x eats ?y]', '[]', '[]'], R).
+test(find_kb_api_no_variable,
+     true(R == error("laas.openrobots.ontology.exceptions.OntologyServerException",
+                     "One unbound variable must be given to execute a 'find'"))) :-
+    sq_fresh,
+    test_call(find, ['[]', '[?x rdf:type Monkey]', '[]', '[]'], R).
 test(find_for_agent_filters, true(Xs == ["cow"])) :-
     sq_fresh,
     test_set_call(findForAgent, [myself, x, '[?x age ?a]', '[?a < 20, ?x != oro:gorilla]'], Xs).
@@ -622,18 +624,16 @@ test(listed, true(Missing == [])) :-
     atom_json_term(Atom, Listed, [value_string_as(string)]),
     subtract(["query(String, String)", "find(String, Set, Set)", "sparql(String)"],
              Listed, Missing).
-test(parse_error_reply, [ condition(sq_error_table_knows_sparql),
-                          true(Name-Found == "laas.openrobots.ontology.exceptions.InvalidQueryException"-true)
-                        ]) :-
+test(parse_error_reply,
+     true(Name-Found == "laas.openrobots.ontology.exceptions.InvalidQueryException"-true)) :-
     test_call(query, [x, "SELECT ?x WHERE { ?x a oro:Monkey"], error(Name, Message)),
     (   sub_string(Message, _, _, _, "com.hp.hpl.jena.query.QueryParseException"),
         sub_string(Message, _, _, _, "column 34")
     ->  Found = true
     ;   Found = Message
     ).
-test(find_filter_error_reply, [ condition(sq_error_table_knows_sparql),
-                                true(Name == "laas.openrobots.ontology.exceptions.InvalidQueryException")
-                              ]) :-
+test(find_filter_error_reply,
+     true(Name == "laas.openrobots.ontology.exceptions.InvalidQueryException")) :-
     test_call(find, [x, '[?x rdf:type Monkey]', '[?x = ]'], error(Name, _)).
 test(error_reply_is_an_error, true(Kind == error)) :-
     test_call(sparql, ["SELECT WHERE"], Reply),

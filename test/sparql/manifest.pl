@@ -170,6 +170,8 @@ test('fn-langmatches','literals.ttl','fn-langmatches.rq',rows([v],[[v=lang("cat"
 test('fn-langmatches-star','literals.ttl','fn-langmatches-star.rq',rows([v],[[v=lang("chat",fr)],[v=lang("cat",'en-GB')]])).
 test('fn-datatype','literals.ttl','fn-datatype.rq',rows([x,d],[[x=i1,d=xsd:integer],[x=i2,d=xsd:int],[x=l1,d=rdf:langString],[x=s1,d=xsd:string],[x=u1,d=custom]])).
 test('fn-isiri','literals.ttl','fn-isiri.rq',rows([x],[[x=r1]])).
+test('fn-isuri','literals.ttl','fn-isuri.rq',rows([x],[[x=r1]])).
+test('fn-isuri-terms','literals.ttl','fn-isuri-terms.rq',rows([a,b,c,d,e],[[a=bool(true),b=bool(false),c=bool(false),d=bool(false)]])).
 test('fn-isblank','literals.ttl','fn-isblank.rq',rows([x],[[x=k1]])).
 test('fn-isliteral','literals.ttl','fn-isliteral.rq',rows([n],[[n=int(17)]])).
 test('fn-isnumeric','literals.ttl','fn-isnumeric.rq',rows([x],[[x=d1],[x=e1],[x=f1],[x=i1],[x=i2],[x=z1]])).
@@ -191,6 +193,10 @@ test('fn-bound','zoo.ttl','fn-bound.rq',rows([x,has],[[x=kong,has=bool(true)],[x
 
 test('op-promote','literals.ttl','op-promote.rq',rows([a,b,c,d,e,f],[[a=int(3),b=dec('2.5'),c=dbl('2.0'),d=dec('3.5'),e=dec('2.0'),f=dec('5.0')]])).
 test('op-float','literals.ttl','op-float.rq',rows([r],[[r=typed("3.5",xsd:float)]])).
+test('op-subtract','literals.ttl','op-subtract.rq',rows([a,b,c,d,e,f,g,h],[[a=int(2),b=dec('-0.5'),c=dbl('2.0'),d=dec('2.0'),e=dec('-0.2'),f=int(3),g=int(3),h=int(2)]])).
+test('op-subtract-typed','literals.ttl','op-subtract-typed.rq',rows([x,r],[[x=i1,r=int(0)],[x=i2,r=int(1)],[x=d1,r=dec('0.5')],[x=f1,r=typed("1.5",xsd:float)],[x=e1,r=dbl('9.0')],[x=z1,r=int(-1)],[x=s1],[x=s2],[x=s3],[x=l1],[x=l2],[x=b1],[x=b2],[x=x1],[x=u1],[x=t1],[x=t2],[x=r1],[x=k1]])).
+test('op-subtract-vars','literals.ttl','op-subtract-vars.rq',rows([a,b,c,d],[[a=dbl('-9.0'),b=dec('-0.5'),c=typed("-1.5",xsd:float),d=dbl('-7.5')]])).
+test('op-subtract-filter','literals.ttl','op-subtract-filter.rq',rows([x],[[x=d1],[x=i1],[x=z1]])).
 test('op-numeric-eq','literals.ttl','op-numeric-eq.rq',rows([x],[[x=i1]])).
 test('op-numeric-cmp','literals.ttl','op-numeric-cmp.rq',rows([x],[[x=d1],[x=f1],[x=i2]])).
 test('op-not-equal','literals.ttl','op-not-equal.rq',rows([x],[[x=k1],[x=r1],[x=s2],[x=s3]])).
