@@ -436,6 +436,7 @@ test(silent_clients,
 
 test(idle_timeout_frees_the_server, [true(Closed-Again == all-true)]) :-
     exh_max_connections(Max),
+    test_wait_until(exh_no_connection, 10),   % the last test's are gone
     exh_with_setting(
         oro_server:idle_timeout, 1,
         ( exh_open(Max, Silent),
@@ -449,6 +450,9 @@ test(idle_timeout_frees_the_server, [true(Closed-Again == all-true)]) :-
               exh_close_all(Silent))
         )),
     test_bool(test_wait_until(exh_served_now, 10), Again).
+
+exh_no_connection :-
+    \+ oro_server:connection(_).
 
 exh_idle_closed(Conn, Kind) :-
     oro_drain(Conn, Messages, 15),
