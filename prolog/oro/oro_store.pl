@@ -61,8 +61,7 @@ the reasoner uses to know when its schema closures are stale.
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
     ontology_graph/1,               % Graph
-    named/2,                        % LowerLocalName, IRI
-    indexed/1.                      % IRI
+    name_of/2.                      % IRI, LowerLocalName
 
 %!  oro_graph(+Model, +Layer, -Graph) is det.
 %
@@ -473,8 +472,7 @@ oro_store_reset :-
     with_mutex(oro_write,
                ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
-                 retractall(named(_, _)),
-                 retractall(indexed(_)),
+                 retractall(name_of(_, _)),
                  retractall(model_graph(_, _, _)),
                  retractall(model_alias(_, _)),
                  retractall(ontology_graph(_)),
@@ -554,7 +552,7 @@ oro_scratch_graph(Graph) :-
 %   faster than rdf_db's resource table, which keeps every IRI it saw.
 
 oro_named(Lower, IRI) :-
-    named(Lower, IRI).
+    name_of(IRI, Lower).                % JIT-indexed on either argument
 
 index_names(S, P, O) :-
     index_name(S),
@@ -565,14 +563,13 @@ index_names(S, P, O) :-
     ).
 
 index_name(R) :-
-    (   indexed(R)
+    (   name_of(R, _)
     ->  true
     ;   rdf_is_bnode(R)
     ->  true
     ;   oro_local_name(R, Local),
         downcase_atom(Local, Lower),
-        assertz(indexed(R)),
-        assertz(named(Lower, R))
+        assertz(name_of(R, Lower))
     ).
 
 index_graph_names(Graph) :-
