@@ -492,7 +492,108 @@ test(batch_not_list, error(type_error(list(text), foo))) :-
 test(statement_not_text, error(type_error(text, 42))) :-
     oro_parse_statement(42, _).
 
+%   Unterminated quotes.  The tokenizer does not split inside quotes,
+%   so a quote left open swallows the rest of the text into the last
+%   token; with three tokens left, that token is no name nor literal.
+
+test(unterminated_quote_three_tokens,            % the add vector
+     error(type_error(oro_statement, "a b \"unterminated, c d e"))) :-
+    oro_parse_statement("a b \"unterminated, c d e", _).
+test(unterminated_quote_from_set,
+     error(type_error(oro_statement, "a b \"unterminated, c d e"))) :-
+    oro_parse_collection(set, "[a b \"unterminated, c d e]", Elements),
+    assertion(Elements == ["a b \"unterminated, c d e"]),
+    oro_parse_statements(Elements, _).
+test(unterminated_quote_in_batch,
+     error(type_error(oro_statement, "c d \"e f"))) :-
+    oro_parse_statements(["a p o", "c d \"e f", "g h i"], _).
+test(trailing_double_quote,
+     error(type_error(oro_statement, "s p x\""))) :-
+    oro_parse_statement("s p x\"", _).
+test(opening_double_quote_only,
+     error(type_error(oro_statement, "s p \""))) :-
+    oro_parse_statement("s p \"", _).
+test(unterminated_single_quote,
+     error(type_error(oro_statement, "s p 'x y"))) :-
+    oro_parse_statement("s p 'x y", _).
+test(apostrophe_in_object_name,
+     error(type_error(oro_statement, "s p john's"))) :-
+    oro_parse_statement("s p john's", _).
+test(escaped_closing_quote,                      % "a\" : \" closes nothing
+     error(type_error(oro_statement, "s p \"a\\\""))) :-
+    oro_parse_statement("s p \"a\\\"", _).
+test(unterminated_quote_trimmed,
+     error(type_error(oro_statement, "s p \"x"))) :-
+    oro_parse_statement("  s p \"x \t", _).
+test(text_after_closing_quote,
+     error(type_error(oro_statement, "s p \"abc\"def"))) :-
+    obj("\"abc\"def", _).
+test(single_quoted_then_text,
+     error(type_error(oro_statement, "s p 'a'b"))) :-
+    obj("'a'b", _).
+test(empty_language_tag,
+     error(type_error(oro_statement, "s p \"x\"@"))) :-
+    obj("\"x\"@", _).
+test(bad_language_tag,
+     error(type_error(oro_statement, "s p \"x\"@1"))) :-
+    obj("\"x\"@1", _).
+test(unterminated_quote_atom_text,
+     error(type_error(oro_statement, "s p \"x"))) :-
+    oro_parse_statement('s p "x', _).
+test(unterminated_quote_api,
+     error(type_error(oro_statement, "s p \"x"))) :-
+    oro_statements(["a p o", "s p \"x"], _, _).
+
 :- end_tests(errors).
+
+
+                 /*******************************
+                 *        CLOSED QUOTES         *
+                 *******************************/
+
+/*  What the quote check accepts: every quote a token opens is closed
+    in it, by a quote of the same kind, escaped quotes not counting.
+*/
+
+:- begin_tests(closed_quotes).
+
+test(quote_of_other_kind_inside, true(O == L)) :-
+    obj("'say \"hi\"'", O),
+    test_literal(xsd:string, 'say "hi"', L).
+test(apostrophe_inside_double_quotes, true(O == L)) :-
+    obj("\"it's\"", O),
+    test_literal(xsd:string, 'it\'s', L).
+test(escaped_backslash_then_quote, true(O == L)) :-
+    obj("\"a\\\\\"", O),
+    test_literal(xsd:string, 'a\\', L).
+test(escaped_quote_inside, true(O == L)) :-
+    obj("\"a\\\"b\"", O),
+    test_literal(xsd:string, 'a"b', L).
+test(escaped_quote_in_name_kept, true(O == IRI)) :-
+    obj("a\\\"b", O),
+    oro('a\\"b', IRI).
+test(balanced_quotes_in_name_kept, true(O == IRI)) :-  % [QUIRK] as ORO
+    obj("a\"b\"c", O),
+    oro('a"b"c', IRI).
+test(quoted_subject_with_space_kept, true(S == IRI)) :- % [QUIRK] as ORO
+    oro_parse_statement("\"a b\" p o", rdf(S, _, _)),
+    oro('"a b"', IRI).
+test(quoted_lang_and_type_kept, true(Os == [literal(lang(en, x)), L])) :-
+    obj("\"x\"@en", O1),
+    obj("'5'^^xsd:int", O2),
+    Os = [O1, O2],
+    test_literal(xsd:int, '5', L).
+test(plain_tokens, all(T == ["a", "?x", "a\\\"b", "'q'", "\"it's\"",
+                             "'\"'", "\"\"", "\"\\\\\""])) :-
+    member(T, ["a", "?x", "a\\\"b", "'q'", "\"it's\"", "'\"'", "\"\"",
+               "\"\\\\\""]),
+    oro_parse:quotes_closed(T).
+test(open_tokens, all(T == ["\"", "'", "x\"", "\"a\\\"", "john's", "'a\"",
+                            "\"a'\"'"])) :-
+    member(T, ["\"", "'", "x\"", "\"a\\\"", "john's", "'a\"", "\"a'\"'"]),
+    \+ oro_parse:quotes_closed(T).
+
+:- end_tests(closed_quotes).
 
 
                  /*******************************
@@ -536,7 +637,8 @@ object_tokens(Tokens) :-
              "5^^xsd:int", "x^^xsd:int", "\"5\"^^xsd:int", "5^^xsd:foo",
              "5^^", "^^xsd:int", "5^^<http://x.org/t>", "5^^celsius",
              "\"it's\"^^xsd:string", "true^^xsd:boolean", "\u00e9^^xsd:int",
-             "[a]", "{a}", "a\\b", "\"a\\nb\"", "\"\\u00e9\"", "\"\\u12\""
+             "[a]", "{a}", "a\\b", "\"a\\nb\"", "\"\\u00e9\"", "\"\\u12\"",
+             "\"x", "x\"", "'x", "john's", "\"a\\\"", "\"a\"b", "'a'b"
            ],
            Tokens).
 
@@ -682,6 +784,16 @@ test(name_start, Bad == []) :-
               ->  General = true
               ;   General = false
               ),
+              Fast \== General
+            ),
+            Bad).
+test(quotes_closed_random, Bad == []) :-
+    random_corpus("a \"'\\b", 10, 3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              test_bool(oro_parse:quotes_closed(Text), Fast),
+              string_codes(Text, Codes),
+              test_bool(oro_parse:closed_codes(Codes), General),
               Fast \== General
             ),
             Bad).

@@ -56,6 +56,14 @@ srv_start_commonsense :-
 srv_fresh :-
     test_ok(reset, []).
 
+%   srv_store_state(-State): what the robot's model holds, as the
+%   sorted subjects, predicates and objects of its statements.
+
+srv_store_state(s(Ss, Ps, Os)) :-
+    test_set_call(find, [s, '[?s ?p ?o]'], Ss),
+    test_set_call(find, [p, '[?s ?p ?o]'], Ps),
+    test_set_call(find, [o, '[?s ?p ?o]'], Os).
+
 %   srv_reply_kind(+Reply, -Kind): ok, error or what else came.
 
 srv_reply_kind(ok(_), ok) :- !.
@@ -966,6 +974,8 @@ test(tableware, [ setup(srv_seed_table),
                  check-['[fork1 rdf:type Artifact]']
                ],
                Replies).
+test(label_myself, true(Reply == ok("\"myself\""))) :-
+    test_call(getLabel, [myself], Reply).
 test(glass_on_table, [ setup(srv_seed_table),
                        true(Xs == ["fork1", "glass1"])
                      ]) :-
@@ -1043,6 +1053,62 @@ test(unterminated_quote,
                    )),
     maplist(test_error_name, [R1, R2], [E1, E2]),
     Replies = [E1, E2, R3, R4].
+test(unterminated_quote_three_tokens,
+     [ setup(srv_fresh),
+       true(Replies-Unchanged ==
+            [ error(Illegal, "Not a statement: \"a b \\\"unterminated, c d e\"."),
+              error(Illegal, "Not a statement: \"a b \\\"unterminated, c d e\"."),
+              ok("[]"),
+              ok("false")
+            ]-true)
+     ]) :-
+    % Three tokens are left when the quote swallows the rest of the set.
+    Illegal = "laas.openrobots.ontology.exceptions.IllegalStatementException",
+    srv_store_state(Before),
+    test_calls([ add-['[a b "unterminated, c d e]'],
+                 add-['[horse rdf:type Animal, a b "unterminated, c d e]'],
+                 find-[o, '[a b ?o]'],
+                 check-['[horse rdf:type Animal]']
+               ],
+               Replies),
+    srv_store_state(After),
+    test_bool(After == Before, Unchanged).
+test(unterminated_quote_in_object,
+     [ setup(srv_fresh),
+       forall(member(Set, [ '[toto likes tata"]',
+                            '[toto likes \'tata tutu]',
+                            '[toto likes john\'s]',
+                            '[toto likes "tata"tutu]'
+                          ])),
+       true(Name-Unchanged ==
+            "laas.openrobots.ontology.exceptions.IllegalStatementException"-true)
+     ]) :-
+    srv_store_state(Before),
+    test_call(add, [Set], Reply),
+    test_error_name(Reply, Name),
+    srv_store_state(After),
+    test_bool(After == Before, Unchanged).
+test(closed_quotes_accepted,
+     [ setup(srv_fresh),
+       true(Os == ["it's", "say \"hi\""])
+     ]) :-
+    test_ok(add, ['[toto says \'say "hi"\', toto says "it\'s"]']),
+    test_set_call(find, [o, '[toto says ?o]'], Os).
+test(pattern_in_add,
+     [ setup(srv_fresh),
+       true(Replies == [ error(Illegal, "A complete statement is expected \c
+                                         here, not a pattern: x ?p y."),
+                         error(Illegal, "A complete statement is expected \c
+                                         here, not a pattern: x ?p y."),
+                         ok("false")
+                       ])
+     ]) :-
+    Illegal = "laas.openrobots.ontology.exceptions.IllegalStatementException",
+    test_calls([ add-['[horse rdf:type Animal, x ?p y]'],
+                 update-['[horse rdf:type Animal,  x ?p y ]'],
+                 check-['[horse rdf:type Animal]']
+               ],
+               Replies).
 test(invalid_utf8,
      true(Messages == [ error("laas.openrobots.ontology.exceptions.OntologyServerException",
                               "The request is not valid UTF-8."),

@@ -169,13 +169,42 @@ oro_robot_id(Id) :-
 		 *         STATEMENTS           *
 		 *******************************/
 
+%   complete_triples(+Statements, -Triples): the triples of
+%   Statements, which must all be complete.  The error names the first
+%   pattern as the client wrote it: its text, trimmed, or the light
+%   form of a term (`x ?_ y`).
+
 complete_triples(Statements, Triples) :-
     oro_statements(Statements, Triples, _),
-    (   member(rdf(S, P, O), Triples),
-        \+ ground(rdf(S, P, O))
-    ->  format(string(Text), "~w", [rdf(S, P, O)]),
+    (   first_pattern(Statements, Triples, Statement, Triple)
+    ->  statement_display(Statement, Triple, Text),
         throw(error(syntax_error(oro_statement_incomplete(Text)), _))
     ;   true
+    ).
+
+first_pattern([Statement0|Statements], [Triple0|Triples],
+              Statement, Triple) :-
+    (   ground(Triple0)
+    ->  first_pattern(Statements, Triples, Statement, Triple)
+    ;   Statement = Statement0,
+        Triple = Triple0
+    ).
+
+%   statement_display(+Statement, +Triple, -Text): Text (a string)
+%   shows Statement to the client who gave it.
+
+statement_display(Statement, rdf(S, P, O), Text) :-
+    (   atomic(Statement)                   % a string or an atom
+    ->  split_string(Statement, "", " \t\r\n", [Text])
+    ;   maplist(position_display, [S, P, O], Parts),
+        atomic_list_concat(Parts, ' ', Atom),
+        atom_string(Atom, Text)
+    ).
+
+position_display(Term, Text) :-
+    (   var(Term)
+    ->  Text = '?_'
+    ;   oro_term_light_text(Term, Text)
     ).
 
 		 /*******************************
@@ -359,7 +388,7 @@ oro_save(Model0, File) :-
     oro_resolve_model(Model0, Model),
     must_be(atom, File),
     save_path(File, Path),
-    Graph = 'oro:save',
+    oro_shared_graph(scratch(save), Graph),
     oro_scratch_graph(Graph),
     with_mutex(oro_write,
                setup_call_cleanup(

@@ -48,6 +48,7 @@ Errors are ISO-shaped, `error(Formal, _)`:
   | `syntax_error(oro_statement_tokens(N, Stmt))` | a statement without 3 tokens     |
   | `syntax_error(oro_statement_empty_token(Stmt))` | 3 tokens, one of them empty (two spaces) |
   | `syntax_error(oro_statement_variable(Stmt))`  | a bare `?` token                 |
+  | `type_error(oro_statement, Stmt)`             | a token with an unterminated quote (`a b "c`), or an object opening with a quote that is no literal (`"a"b`) |
   | `syntax_error(oro_invalid_datatype(Type))`    | an unknown `xsd:` datatype, or an empty one |
   | `syntax_error(oro_lexical_form(Lex, Type))`   | a lexical form its datatype rejects |
 
@@ -489,6 +490,11 @@ map_entry(Text, Token, Key-Value) :-
 %   @error syntax_error(oro_statement_empty_token(Stmt)) if one of the
 %          three tokens is empty.
 %   @error syntax_error(oro_statement_variable(Stmt)) for a bare `?`.
+%   @error type_error(oro_statement, Stmt) if a token leaves a quote
+%          open (`a b "c d`: a `"` or `'` not closed by one of the same
+%          kind, an escaped one not counting), or if an object opens
+%          with a quote but is neither a string, a language-tagged nor
+%          a typed literal (`"abc"def`).
 %   @error syntax_error(oro_invalid_datatype(Type)) for `lex^^type`
 %          with an unknown XSD datatype.
 %   @error syntax_error(oro_lexical_form(Lex, Type)) for `lex^^type`
@@ -623,7 +629,61 @@ statement_tokens(Text, Stmt, ST, PT, OT) :-
     (   ( ST == "" ; PT == "" ; OT == "" )
     ->  throw(error(syntax_error(oro_statement_empty_token(Stmt)), _))
     ;   true
+    ),
+    (   member(Token, [ST, PT, OT]),
+        \+ quotes_closed(Token)
+    ->  quote_error(Stmt)
+    ;   true
     ).
+
+%   quotes_closed(+Token): every quote Token opens is closed in it.  A
+%   `"` or `'` opens a quoted run, which ends at the next quote of the
+%   same kind (the other kind is plain text inside it); a `\` escapes
+%   the next character, inside a run or not, as in unescape_codes/3.
+%   So `"it's"`, `'say "hi"'` and `a\"b` are closed; `"abc`, `x"`,
+%   `john's` and `"a\"` are not.  Only the last token of a statement
+%   can fail this: the tokenizer does not split inside quotes.
+
+quotes_closed(Token) :-
+    (   split_string(Token, "\"'", "", [_])
+    ->  true                                % no quote at all
+    ;   string_codes(Token, Codes),
+        closed_codes(Codes)
+    ).
+
+closed_codes([]).
+closed_codes([C|Cs]) :-
+    (   C == 0'\\
+    ->  (   Cs = [_|Cs1]
+        ->  closed_codes(Cs1)
+        ;   true
+        )
+    ;   quote_code(C)
+    ->  quoted_run(Cs, C, Rest),
+        closed_codes(Rest)
+    ;   closed_codes(Cs)
+    ).
+
+%   quoted_run(+Codes, +Quote, -Rest): Codes starts inside a run opened
+%   by Quote; Rest follows the quote that closes it.  Fails if none does.
+
+quoted_run([C|Cs], Q, Rest) :-
+    (   C == Q
+    ->  Rest = Cs
+    ;   C == 0'\\
+    ->  Cs = [_|Cs1],
+        quoted_run(Cs1, Q, Rest)
+    ;   quoted_run(Cs, Q, Rest)
+    ).
+
+%   quote_error(+Stmt): Stmt has a token with an unterminated quote, or
+%   an object token opening with a quote that is not a literal.  The
+%   error is the one server/oro_errors.pl maps to ORO's
+%   IllegalStatementException for a text that is not a statement.
+
+quote_error(Stmt) :-
+    string_from_text(Stmt, String),
+    throw(error(type_error(oro_statement, String), _)).
 
 %   resource_token(+Token, +Stmt, -Term) and object_token(+Token, +Stmt,
 %   -Term): Token is not empty; Stmt is the statement (for errors).
@@ -664,7 +724,12 @@ object_token(Token, Stmt, Term) :-
             object_codes(Codes, Token, Term)
         )
     ;   string_codes(Token, Codes),
-        object_codes(Codes, Token, Term)
+        object_codes(Codes, Token, Term0),
+        (   atom(Term0),
+            quote_code(C)
+        ->  quote_error(Stmt)               % "abc"def, "x"@, 'a'b
+        ;   Term = Term0
+        )
     ).
 
 %   name_start(+Code): Code may start a name: a letter (code_type/2

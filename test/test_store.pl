@@ -1,0 +1,431 @@
+:- use_module(library(plunit)).
+:- use_module(oro_test_support).
+:- use_module(library(oro)).
+
+/*  Tests for the store (library(oro/oro_store)): ontologies loaded by
+    oro_init/1 in N-Triples (test/fixtures/store_kitchen.nt) and RDF/XML
+    (test/fixtures/store_dining.rdf); the ontology layer is read-only,
+    whatever a model removes, updates or re-adds; masks are per model,
+    so removing an ontology triple from `myself` leaves it in another
+    agent's model; graph names come from the naming predicates
+    (oro_graph/3 for a model's layers, oro_shared_graph/2 for the
+    ontology layer) and from nowhere else.
+
+    Run: cd /work/main && swipl -g run_tests -t halt test/test_store.pl
+*/
+
+:- use_module(library(oro/oro_store)).
+:- use_module(library(semweb/rdf_db)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+
+%   Fresh stores: one fixture, both, or both with a second model
+%   `toto` over the same ontology layer.
+
+st_kitchen :-
+    test_fixture('store_kitchen.nt', File),
+    oro_init([commonsense(false), ontologies([File])]).
+
+st_dining :-
+    test_fixture('store_dining.rdf', File),
+    oro_init([commonsense(false), ontologies([File])]).
+
+st_both :-
+    test_fixture('store_kitchen.nt', NT),
+    test_fixture('store_dining.rdf', RDF),
+    oro_init([commonsense(false), ontologies([NT, RDF])]).
+
+st_two_models :-
+    st_both,
+    oro_create_model(toto).
+
+%   st_iri(+Local, -IRI): Local in the default namespace.
+
+st_iri(Local, IRI) :-
+    rdf_global_id(oro:Local, IRI).
+
+%   st_triple(+Statement, -Triple): the rdf/3 term of a statement text.
+
+st_triple(Statement, Triple) :-
+    oro_statements([Statement], [Triple], _).
+
+%   st_ontology(-Graphs): the graphs of the ontology layer, in load
+%   order; st_ontology_triples(-Triples): their triples, sorted.
+
+st_ontology(Graphs) :-
+    findall(G, oro_ontology_graph(G), Graphs).
+
+st_ontology_triples(Triples) :-
+    st_ontology(Graphs),
+    findall(rdf(S, P, O),
+            ( member(G, Graphs),
+              rdf(S, P, O, G)
+            ),
+            Triples0),
+    msort(Triples0, Triples).
+
+%   st_graph_triples(+Model, +Layer, -Triples): the triples of the
+%   graph of Layer of Model, sorted.
+
+st_graph_triples(Model, Layer, Triples) :-
+    oro_graph(Model, Layer, Graph),
+    findall(rdf(S, P, O), rdf(S, P, O, Graph), Triples0),
+    msort(Triples0, Triples).
+
+%   st_holds(+Model, +Statement, -Bool)
+
+st_holds(Model, Statement, Bool) :-
+    test_bool(oro_check(Model, [Statement]), Bool).
+
+%   st_layers(-Layers): the layers of a model.
+
+st_layers([profile(longterm), profile(shortterm), profile(episodic), mask]).
+
+
+                 /*******************************
+                 *           N-TRIPLES          *
+                 *******************************/
+
+:- begin_tests(store_ntriples).
+
+test(facts, [ setup(st_kitchen),
+              true(Holds == [true, true, true])
+            ]) :-
+    maplist(st_holds(myself), [ "mug1 rdf:type Mug",
+                                "mug1 isOn shelf1",
+                                "mug1 capacity 250"
+                              ],
+            Holds).
+test(inference_from_schema, [ setup(st_kitchen),
+                              true(Xs == [mug1])
+                            ]) :-
+    test_find(myself, x, ["?x rdf:type Container"], Xs).
+test(typed_literal, [ setup(st_kitchen),
+                      true(Os == [L])
+                    ]) :-
+    st_iri(mug1, Mug),
+    st_iri(capacity, Capacity),
+    findall(O, oro_asserted(myself, Mug, Capacity, O), Os),
+    test_literal(xsd:int, '250', L).
+test(escaped_label, [ setup(st_kitchen),
+                      true(Label == 'tasse "caf\u00e9"')
+                    ]) :-
+    st_iri(mug1, Mug),
+    oro_label(myself, Mug, fr, Label).
+test(one_graph, [ setup(st_kitchen),
+                  true(Graphs-Count == [Graph]-9)
+                ]) :-
+    st_ontology(Graphs),
+    oro_shared_graph(ontology(1), Graph),
+    rdf_statistics(triples_by_graph(Graph, Count)).
+test(nothing_asserted_but_robot_type, [ setup(st_kitchen),
+                                        true(Count == 1)
+                                      ]) :-
+    oro_asserted_count(myself, Count).
+
+:- end_tests(store_ntriples).
+
+
+                 /*******************************
+                 *            RDF/XML           *
+                 *******************************/
+
+:- begin_tests(store_rdfxml).
+
+test(facts, [ setup(st_dining),
+              true(Holds == [true, true])
+            ]) :-
+    maplist(st_holds(myself), [ "plate1 rdf:type Plate",
+                                "plate1 isOn table1"
+                              ],
+            Holds).
+test(inference_from_schema, [ setup(st_dining),
+                              true(Xs == [plate1])
+                            ]) :-
+    test_find(myself, x, ["?x rdf:type Container"], Xs).
+test(typed_literal, [ setup(st_dining),
+                      true(Os == [L])
+                    ]) :-
+    st_iri(plate1, Plate),
+    st_iri(weight, Weight),
+    findall(O, oro_asserted(myself, Plate, Weight, O), Os),
+    test_literal(xsd:double, '0.4', L).
+test(label, [ setup(st_dining),
+              true(Label == 'dinner plate')
+            ]) :-
+    st_iri(plate1, Plate),
+    oro_label(myself, Plate, Label).
+test(one_graph, [ setup(st_dining),
+                  true(Graphs-Count == [Graph]-7)
+                ]) :-
+    st_ontology(Graphs),
+    oro_shared_graph(ontology(1), Graph),
+    rdf_statistics(triples_by_graph(Graph, Count)).
+
+:- end_tests(store_rdfxml).
+
+
+                 /*******************************
+                 *         SEVERAL FILES        *
+                 *******************************/
+
+:- begin_tests(store_several_files).
+
+test(graphs_in_load_order, [ setup(st_both),
+                             true(Graphs == [G1, G2])
+                           ]) :-
+    st_ontology(Graphs),
+    oro_shared_graph(ontology(1), G1),
+    oro_shared_graph(ontology(2), G2).
+test(each_file_its_graph, [ setup(st_both),
+                            true(Where == [1-mug1, 2-plate1])
+                          ]) :-
+    findall(N-Name,
+            ( member(N, [1, 2]),
+              oro_shared_graph(ontology(N), Graph),
+              rdf(Subject, rdf:type, _, Graph),
+              st_iri(Name, Subject),
+              sub_atom(Name, _, 1, 0, '1')
+            ),
+            Where).
+test(schema_across_files, [ setup(st_both),
+                            true(Xs == [mug1, plate1])
+                          ]) :-
+    test_find(myself, x, ["?x rdf:type Container"], Xs).
+test(unknown_extension,
+     [ error(domain_error(ontology_file, _)),
+       cleanup(st_kitchen)
+     ]) :-
+    test_fixture('plugins/good_plugin.pl', File),
+    oro_init([commonsense(false), ontologies([File])]).
+
+:- end_tests(store_several_files).
+
+
+                 /*******************************
+                 *     READ-ONLY ONTOLOGY LAYER *
+                 *******************************/
+
+:- begin_tests(store_read_only).
+
+test(changes_leave_the_layer, [ setup(st_both),
+                                true(After == Before)
+                              ]) :-
+    st_ontology_triples(Before),
+    oro_add(myself, ["cup1 rdf:type Mug", "mug1 isOn table1"]),
+    oro_remove(myself, ["mug1 isOn shelf1", "Plate rdfs:subClassOf Container"]),
+    oro_clear(myself, ["plate1 ?p ?o"]),
+    oro_update(myself, ["mug1 capacity 300"]),
+    oro_add(myself, ["mug1 capacity 400"], shortterm),
+    st_ontology_triples(After).
+test(remove_masks, [ setup(st_kitchen),
+                     true(Result == [false, [T], true])
+                   ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    st_holds(myself, "mug1 isOn shelf1", Holds),
+    st_triple("mug1 isOn shelf1", T),
+    st_graph_triples(myself, mask, Masked),
+    oro_shared_graph(ontology(1), Graph),
+    T = rdf(S, P, O),
+    test_bool(rdf(S, P, O, Graph), Kept),
+    Result = [Holds, Masked, Kept].
+test(removed_schema_stops_inference, [ setup(st_kitchen),
+                                       true(Xs == [])
+                                     ]) :-
+    oro_remove(myself, ["Mug rdfs:subClassOf Container"]),
+    test_find(myself, x, ["?x rdf:type Container"], Xs).
+test(add_back_unmasks, [ setup(st_kitchen),
+                         true(Result == [true, [], []])
+                       ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    oro_add(myself, ["mug1 isOn shelf1"]),
+    st_holds(myself, "mug1 isOn shelf1", Holds),
+    st_graph_triples(myself, mask, Masked),
+    st_triple("mug1 isOn shelf1", T),
+    st_graph_triples(myself, profile(longterm), Long),
+    include(==(T), Long, Copies),
+    Result = [Holds, Masked, Copies].
+test(known_fact_not_copied, [ setup(st_kitchen),
+                              true(Count == 1)
+                            ]) :-
+    oro_add(myself, ["mug1 isOn shelf1", "mug1 rdf:type Mug"]),
+    oro_asserted_count(myself, Count).
+test(update_masks_ontology_value, [ setup(st_kitchen),
+                                    true(Values-Kept == ['300']-true)
+                                  ]) :-
+    oro_update(myself, ["mug1 capacity 300"]),
+    test_find(myself, c, ["mug1 capacity ?c"], Values),
+    st_triple("mug1 capacity 250", rdf(S, P, O)),
+    oro_shared_graph(ontology(1), Graph),
+    test_bool(rdf(S, P, O, Graph), Kept).
+test(clear_masks_matches, [ setup(st_kitchen),
+                            true(Result == [[], 9])
+                          ]) :-
+    oro_clear(myself, ["mug1 ?p ?o"]),
+    st_iri(mug1, Mug),
+    findall(P-O, oro_asserted(myself, Mug, P, O), Left),
+    oro_shared_graph(ontology(1), Graph),
+    rdf_statistics(triples_by_graph(Graph, Count)),
+    Result = [Left, Count].
+test(reset_lifts_masks, [ setup(st_kitchen),
+                          true(Result == [true, []])
+                        ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    oro_reset,
+    st_holds(myself, "mug1 isOn shelf1", Holds),
+    st_graph_triples(myself, mask, Masked),
+    Result = [Holds, Masked].
+
+:- end_tests(store_read_only).
+
+
+                 /*******************************
+                 *        PER-MODEL MASKS       *
+                 *******************************/
+
+:- begin_tests(store_masks).
+
+test(remove_in_myself_kept_in_toto, [ setup(st_two_models),
+                                      true(Result == [false, true, [], [T]])
+                                    ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    st_holds(myself, "mug1 isOn shelf1", Mine),
+    st_holds(toto, "mug1 isOn shelf1", Toto),
+    st_triple("mug1 isOn shelf1", T),
+    st_graph_triples(toto, mask, TotoMask),
+    st_graph_triples(myself, mask, MyMask),
+    Result = [Mine, Toto, TotoMask, MyMask].
+test(remove_in_toto_kept_in_myself, [ setup(st_two_models),
+                                      true(Result == [true, false])
+                                    ]) :-
+    oro_remove(toto, ["plate1 isOn table1"]),
+    st_holds(myself, "plate1 isOn table1", Mine),
+    st_holds(toto, "plate1 isOn table1", Toto),
+    Result = [Mine, Toto].
+test(asserted_per_model, [ setup(st_two_models),
+                           true(Result == [false, true])
+                         ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    st_triple("mug1 isOn shelf1", rdf(S, P, O)),
+    test_bool(oro_asserted(myself, S, P, O), Mine),
+    test_bool(oro_asserted(toto, S, P, O), Toto),
+    Result = [Mine, Toto].
+test(inference_per_model, [ setup(st_two_models),
+                            true(Result == [[plate1], [mug1, plate1]])
+                          ]) :-
+    oro_remove(myself, ["mug1 rdf:type Mug"]),
+    test_find(myself, x, ["?x rdf:type Container"], Mine),
+    test_find(toto, x, ["?x rdf:type Container"], Toto),
+    Result = [Mine, Toto].
+test(schema_removal_per_model, [ setup(st_two_models),
+                                 true(Result == [[mug1], [mug1, plate1]])
+                               ]) :-
+    oro_remove(myself, ["Plate rdfs:subClassOf Container"]),
+    test_find(myself, x, ["?x rdf:type Container"], Mine),
+    test_find(toto, x, ["?x rdf:type Container"], Toto),
+    Result = [Mine, Toto].
+test(update_per_model, [ setup(st_two_models),
+                         true(Result == [['300'], ['250']])
+                       ]) :-
+    oro_update(myself, ["mug1 capacity 300"]),
+    test_find(myself, c, ["mug1 capacity ?c"], Mine),
+    test_find(toto, c, ["mug1 capacity ?c"], Toto),
+    Result = [Mine, Toto].
+test(removed_in_both, [ setup(st_two_models),
+                        true(Result == [false, false, true])
+                      ]) :-
+    oro_remove(myself, ["mug1 isOn shelf1"]),
+    oro_remove(toto, ["mug1 isOn shelf1"]),
+    st_holds(myself, "mug1 isOn shelf1", Mine),
+    st_holds(toto, "mug1 isOn shelf1", Toto),
+    st_triple("mug1 isOn shelf1", rdf(S, P, O)),
+    oro_shared_graph(ontology(1), Graph),
+    test_bool(rdf(S, P, O, Graph), Kept),
+    Result = [Mine, Toto, Kept].
+test(added_facts_stay_in_their_model, [ setup(st_two_models),
+                                        true(Result == [false, true])
+                                      ]) :-
+    oro_add(toto, ["cup1 rdf:type Mug"]),
+    st_holds(myself, "cup1 rdf:type Container", Mine),
+    st_holds(toto, "cup1 rdf:type Container", Toto),
+    Result = [Mine, Toto].
+
+:- end_tests(store_masks).
+
+
+                 /*******************************
+                 *          GRAPH NAMES         *
+                 *******************************/
+
+:- begin_tests(store_graph_names).
+
+test(one_graph_per_model_and_layer, [ setup(st_two_models),
+                                      true(N == 8)
+                                    ]) :-
+    st_layers(Layers),
+    findall(G,
+            ( member(M, [myself, toto]),
+              member(L, Layers),
+              oro_graph(M, L, G)
+            ),
+            Graphs0),
+    sort(Graphs0, Graphs),
+    length(Graphs, N).
+test(graph_det, [ setup(st_two_models),
+                  forall(( member(M, [myself, toto]),
+                           st_layers(Layers),
+                           member(L, Layers)
+                         )),
+                  true(Det == true)
+                ]) :-
+    call_cleanup(oro_graph(M, L, _), Det = true).
+test(layer_of_graph, [ setup(st_two_models),
+                       forall(( member(M, [myself, toto]),
+                                st_layers(Layers),
+                                member(L, Layers)
+                              )),
+                       true(M2-L2 == M-L)
+                     ]) :-
+    oro_graph(M, L, G),
+    oro_graph_layer(G, M2, L2).
+test(ontology_graphs_not_model_graphs, [ setup(st_two_models),
+                                         true(Owners == [])
+                                       ]) :-
+    st_ontology(Graphs),
+    findall(M-L,
+            ( member(G, Graphs),
+              oro_graph_layer(G, M, L)
+            ),
+            Owners).
+test(asserted_in_profile_graph, [ setup(st_two_models),
+                                  true(Where == [myself-longterm, toto-shortterm])
+                                ]) :-
+    oro_add(myself, ["cup1 isOn shelf1"]),
+    oro_add(toto, ["cup1 isOn shelf1"], shortterm),
+    st_triple("cup1 isOn shelf1", T),
+    findall(M-Profile,
+            ( oro_model(M),
+              member(Profile, [longterm, shortterm, episodic]),
+              oro_graph(M, profile(Profile), G),
+              T = rdf(S, P, O),
+              rdf(S, P, O, G)
+            ),
+            Where0),
+    sort(Where0, Where).
+test(every_graph_named, [ setup(st_two_models),
+                          true(Unnamed == [])
+                        ]) :-
+    oro_add(myself, ["cup1 isOn shelf1"]),
+    oro_add(toto, ["cup2 isOn shelf1"], episodic),
+    oro_remove(toto, ["mug1 isOn shelf1"]),
+    oro_update(myself, ["mug1 capacity 300"]),
+    findall(G,
+            ( rdf_graph(G),
+              \+ oro_graph_layer(G, _, _),
+              \+ oro_ontology_graph(G)
+            ),
+            Unnamed).
+test(bad_ontology_index, error(type_error(positive_integer, 0))) :-
+    oro_shared_graph(ontology(0), _).
+
+:- end_tests(store_graph_names).
