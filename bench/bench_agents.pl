@@ -2,6 +2,10 @@
 
         swipl bench/bench_agents.pl [--samples=300] [--facts=100000]
                                     [--time-base=500] [--checkers=4]
+                                    [--spread-facts=60000]
+                                    [--spread-seconds=3]
+                                    [--spread-batch=20]
+                                    [--case=all]
 
     - addForAgent over the socket with 1, 10 and 100 agent models
       (median and p99 of single-statement adds spread over the agents;
@@ -14,7 +18,21 @@
       deadline until they are all gone, and the latency of `check`
       requests sent meanwhile by concurrent clients (before the
       deadline, and from the deadline until the facts are gone).  The
-      time base must leave time to add the facts before they expire.
+      time base must leave time to add the facts before they expire;
+    - forgetting spread-out deadlines: `spread-facts` SHORTTERM facts
+      added in batches of `spread-batch` at a steady pace over
+      `spread-seconds`, so that they have as many deadlines as batches
+      (in process); the CPU time of the memory scheduler thread while
+      they expire (from the first deadline until the last fact is
+      gone), and the lateness of each fact (from its deadline until a
+      watcher saw it gone: median, p99, max, and that of the last fact).
+      The CPU time of the scheduler is also given for the facts added at
+      once.  The lifetime (10 time units) must be longer than
+      `spread-seconds`.
+
+    --case=all (default), agents (addForAgent and memory per agent),
+    forget (facts added at once) or spread (spread-out deadlines) runs
+    only those figures.
 
     The agent figures over the socket come from the real server
     (server/oro_server.pl --port=0) started as a child process; the
@@ -47,6 +65,10 @@ opt_type(samples, samples, nonneg).
 opt_type(facts, facts, nonneg).
 opt_type(time_base, time_base, nonneg).
 opt_type(checkers, checkers, nonneg).
+opt_type(spread_facts, spread_facts, nonneg).
+opt_type(spread_seconds, spread_seconds, number).
+opt_type(spread_batch, spread_batch, positive_integer).
+opt_type(case, case, oneof([all, agents, forget, spread])).
 
 main :-
     current_prolog_flag(argv, Argv),
@@ -55,12 +77,30 @@ main :-
     option(facts(Facts), Options, 100000),
     option(time_base(TimeBase), Options, 500),
     option(checkers(Checkers), Options, 4),
+    option(spread_facts(SpreadFacts), Options, 60000),
+    option(spread_seconds(SpreadSeconds), Options, 3),
+    option(spread_batch(SpreadBatch), Options, 20),
+    option(case(Case), Options, all),
     bench_machine,
-    bench_add_for_agent(Samples),
-    bench_memory_per_agent(100),
-    bench_forgetting(Facts, TimeBase, Checkers),
+    (   case(Case, agents)
+    ->  bench_add_for_agent(Samples),
+        bench_memory_per_agent(100)
+    ;   true
+    ),
+    (   case(Case, forget)
+    ->  bench_forgetting(Facts, TimeBase, Checkers)
+    ;   true
+    ),
+    (   case(Case, spread)
+    ->  bench_forgetting_spread(SpreadFacts, SpreadSeconds, SpreadBatch,
+                                TimeBase)
+    ;   true
+    ),
     oro_events_sync,
     oro_memory_sync.
+
+case(all, _) :- !.
+case(Case, Case).
 
 		 /*******************************
 		 *        SERVER PROCESS        *
@@ -257,14 +297,18 @@ forget_in_process(Facts, TimeBase) :-
     message_queue_create(Queue),
     flag(bench_stop, _, 0),
     thread_create(in_process_checker(Queue), Checker, []),
+    scheduler_cpu(Cpu0),
     wait_gone_in_process(Facts, 30, Gone),
+    scheduler_cpu(Cpu1),
     flag(bench_stop, _, 1),
     thread_join(Checker, _),
     thread_get_message(Queue, latencies(Latencies)),
     message_queue_destroy(Queue),
     Forget is Gone - Deadline,
-    format("   all gone ~3f s after the deadline (~0f facts/s)~n",
-           [Forget, Facts / max(0.000001, Forget)]),
+    Cpu is Cpu1 - Cpu0,
+    format("   all gone ~3f s after the deadline (~0f facts/s); \c
+            scheduler CPU ~3f s (~1f us/fact)~n",
+           [Forget, Facts / max(0.000001, Forget), Cpu, Cpu * 1.0e6 / Facts]),
     window_report('in-process check', Latencies, Deadline, Gone),
     oro_events_sync.
 
@@ -409,6 +453,131 @@ report_or_none(Name, []) :-
 report_or_none(Name, Times) :-
     length(Times, N),
     report(Name, N, Times).
+
+		 /*******************************
+		 *   FORGETTING, SPREAD OUT     *
+		 *******************************/
+
+%   bench_forgetting_spread(+Facts, +Seconds, +Batch, +TimeBase): in
+%   process.  The deadlines are read once all facts are added (before
+%   the first one passes); a watcher thread (this one) then waits for
+%   each fact to go, in deadline order, sleeping until shortly before
+%   its deadline and then polling every 0.5 ms.
+
+bench_forgetting_spread(Facts, Seconds, Batch, TimeBase) :-
+    Lifetime is 10 * TimeBase,
+    Batches is max(1, ceiling(Facts / Batch)),
+    format("~nForgetting ~D SHORTTERM facts added over ~w s, ~D batches of \c
+            ~d (time base ~d ms: lifetime ~d ms)~n",
+           [Facts, Seconds, Batches, Batch, TimeBase, Lifetime]),
+    oro_init([time_base(TimeBase)]),
+    oro_add(myself, ["keeper benchP benchO"]),
+    oro_memory_sync,
+    scheduler_cpu(CpuA0),
+    get_time(T0),
+    spread_adds(0, Batches, Batch, Facts, T0, Seconds),
+    get_time(T1),
+    scheduler_cpu(CpuA1),
+    oro_memory_deadlines(myself, Deadlines),
+    length(Deadlines, Pending),
+    distinct_deadlines(Deadlines, Distinct),
+    format("in process: ~D facts added in ~3f s (~0f/s); ~D deadlines \c
+            (~D distinct) pending when the adds returned; scheduler CPU \c
+            during the adds ~3f s~n",
+           [Facts, T1-T0, Facts/(T1-T0), Pending, Distinct, CpuA1-CpuA0]),
+    (   Pending =\= Facts
+    ->  format("   some facts expired while being added: use a larger \c
+                --time-base or a smaller --spread-seconds~n")
+    ;   true
+    ),
+    Deadlines = [First-_-_|_],
+    last(Deadlines, LastD-_-_),
+    FirstS is First / 1000,
+    sleep_until(FirstS - 0.05),
+    scheduler_cpu(Cpu0),
+    watch_gone(Deadlines, 60, [], Lateness, Gone),
+    scheduler_cpu(Cpu1),
+    Cpu is Cpu1 - Cpu0,
+    Window is Gone - FirstS,
+    format("   expiry from the first deadline until the last fact was \c
+            seen gone: ~3f s (deadlines spread over ~3f s)~n",
+           [Window, (LastD - First) / 1000]),
+    format("   scheduler CPU during expiry ~3f s (~1f us/fact, ~1f% of \c
+            one core)~n",
+           [Cpu, Cpu * 1.0e6 / max(1, Pending),
+            100 * Cpu / max(0.000001, Window)]),
+    Lateness = [LastLate|_],
+    bench_stats(Lateness, Stats),
+    format("   lateness (deadline -> seen gone, ~D facts): median ~3f ms, \c
+            p99 ~3f ms, max ~3f ms; last fact ~3f ms~n",
+           [Stats.n, Stats.median, Stats.p99, Stats.max, LastLate]),
+    oro_events_sync.
+
+spread_adds(I, Batches, _, _, _, _) :-
+    I >= Batches,
+    !.
+spread_adds(I, Batches, Batch, Facts, T0, Seconds) :-
+    sleep_until(T0 + I * Seconds / Batches),
+    From is I * Batch + 1,
+    To is min(Facts, From + Batch - 1),
+    findall(S, ( between(From, To, K),
+                 format(atom(S), 'sfact~d benchP benchO', [K])
+               ), Statements),
+    oro_add(myself, Statements, shortterm),
+    I1 is I + 1,
+    spread_adds(I1, Batches, Batch, Facts, T0, Seconds).
+
+sleep_until(Time) :-
+    get_time(Now),
+    Wait is Time - Now,
+    (   Wait > 0
+    ->  sleep(Wait)
+    ;   true
+    ).
+
+distinct_deadlines(Deadlines, N) :-
+    findall(D, member(D-_-_, Deadlines), Ds0),
+    sort(Ds0, Ds),
+    length(Ds, N).
+
+%   watch_gone(+Deadlines, +MaxSeconds, +Acc, -Lateness, -Gone):
+%   Lateness (ms, the last fact's first) of each fact of Deadlines
+%   (Deadline-rdf(S,P,O)-Profile, earliest first); Gone is when the last
+%   one was seen gone.
+
+watch_gone(Deadlines, MaxSeconds, Acc, Lateness, Gone) :-
+    get_time(Now),
+    Stop is Now + MaxSeconds,
+    watch_gone_(Deadlines, Stop, Acc, Lateness, Now, Gone).
+
+watch_gone_([], _, Lateness, Lateness, Gone, Gone).
+watch_gone_([D-rdf(S, P, O)-_|Rest], Stop, Acc, Lateness, Gone0, Gone) :-
+    (   \+ rdf(S, P, O)
+    ->  get_time(Now),
+        Late is Now * 1000 - D,
+        watch_gone_(Rest, Stop, [Late|Acc], Lateness, Now, Gone)
+    ;   get_time(Now),
+        Now > Stop
+    ->  throw(bench_failed(forgetting_spread, timeout))
+    ;   sleep_until(D / 1000 - 0.002),
+        sleep(0.0005),
+        watch_gone_([D-rdf(S, P, O)-_|Rest], Stop, Acc, Lateness, Gone0,
+                    Gone)
+    ).
+
+%   scheduler_cpu(-Seconds): the CPU time used so far by the memory
+%   scheduler thread (oro_memory), from /proc (thread_statistics/3 may
+%   not look at other threads).
+
+scheduler_cpu(Seconds) :-
+    (   catch(thread_property(oro_memory, system_thread_id(Tid)), _, fail)
+    ->  format(atom(File), '/proc/self/task/~w/schedstat', [Tid]),
+        read_file_to_string(File, Text, []),
+        split_string(Text, " \n", " \n", [Ns|_]),
+        number_string(N, Ns),
+        Seconds is N / 1.0e9
+    ;   Seconds = 0
+    ).
 
 		 /*******************************
 		 *          MEASURING           *

@@ -10,6 +10,7 @@
                 oro_memory_lifetime/2,
                 oro_memory_sync/0
               ]).
+:- use_module(library(oro/oro_store), [oro_store_write/2]).
 
 /*  Tests for memory profiles (ORO-SPEC §9, add(Set, String) of §6.1,
     the vectors of §13.12), through the Prolog API (oro_add/3,
@@ -23,7 +24,12 @@
     fact restarts its lifetime; a fact added both SHORTTERM and
     EPISODIC stays until the later deadline; forgetting updates the
     inferences and fires events (NEW_INSTANCE and FACT_CHECKING
-    ON_FALSE); no reification triples (`rs_...`) are ever visible.
+    ON_FALSE); no reification triples (`rs_...`) are ever visible;
+    with the memory clock set by the test (no wall-clock dependence): a
+    fact goes exactly at its deadline, batches with later deadlines
+    stay, and a fact refreshed after the scheduler popped its old
+    deadline (or while the scheduler waits for the store's write lock)
+    is not forgotten by it.
 
     A small time base (50 ms; 5 ms to see EPISODIC facts go) keeps the
     tests short.  Waits are on conditions (polling every 10 ms, 5 s
@@ -440,6 +446,135 @@ test(agent_model_event, [ setup(agm_mem_fresh(20)),
                        Names, Outcome).
 
 :- end_tests(agm_mem_forgetting).
+
+
+                 /*******************************
+                 *     FORGETTING, CLOCK SET    *
+                 *******************************/
+
+%   These tests set the memory module's clock (oro_memory's test clock,
+%   milliseconds since the epoch) and drive forgetting with
+%   oro_memory_sync/0: what is forgotten depends on the clock they set,
+%   never on the wall clock.  A 50 ms time base: SHORTTERM lives 500 ms.
+
+agm_mem_t0(1700000000000).
+
+agm_mem_clock(Ms) :-
+    oro_memory:set_test_clock(Ms).
+
+agm_mem_clocked :-
+    agm_mem_fresh(50),
+    agm_mem_t0(T0),
+    agm_mem_clock(T0).
+
+agm_mem_unclocked :-
+    agm_mem_clock(system).
+
+%   agm_mem_deadline_list(+Model, -Pairs): Deadline-Statement pairs.
+
+agm_mem_deadline_list(Model, Pairs) :-
+    agm_mem_deadlines(Model, Deadlines),
+    findall(D-S, member(D-S-_, Deadlines), Pairs).
+
+:- begin_tests(agm_mem_clock, [cleanup(agm_mem_unclocked)]).
+
+test(deadline_from_clock, [ setup(agm_mem_clocked),
+                            true(Ds == [D-"f p o"])
+                          ]) :-
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    agm_mem_t0(T0),
+    D is T0 + 500,
+    agm_mem_deadline_list(myself, Ds).
+test(forgotten_at_deadline, [ setup(agm_mem_clocked),
+                              true(r(Before, After, Ds) == r(true, false, []))
+                            ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    Early is T0 + 499,
+    agm_mem_clock(Early),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Before),
+    Due is T0 + 500,
+    agm_mem_clock(Due),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), After),
+    oro_memory_deadlines(myself, Ds).
+test(only_due_batches, [ setup(agm_mem_clocked),
+                         true(r(A, B, Ds) == r(false, true, [D2-"b p o"]))
+                       ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["a p o"], 'SHORTTERM'),
+    T1 is T0 + 100,
+    agm_mem_clock(T1),
+    oro_add(myself, ["b p o"], 'SHORTTERM'),
+    D1 is T0 + 500,
+    D2 is T1 + 500,
+    agm_mem_clock(D1),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "a p o"), A),
+    test_bool(agm_mem_holds(myself, "b p o"), B),
+    agm_mem_deadline_list(myself, Ds).
+
+%   The scheduler pops a due entry (deadline D1 of myself's short-term
+%   facts) and only then forgets, under the store's write lock.  A
+%   refresh of the fact in between (deadline D2) must win: forgetting
+%   with the entry popped before the refresh leaves the fact and its
+%   new deadline.  oro_memory:expire/3 is that second step, called here
+%   with the stale entry.
+
+test(refresh_after_pop_not_forgotten,
+     [ setup(agm_mem_clocked),
+       true(r(Holds, Ds, Gone, Left) == r(true, [D2-"f p o"], true, []))
+     ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    D1 is T0 + 500,
+    T1 is T0 + 100,
+    agm_mem_clock(T1),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    D2 is T1 + 500,
+    agm_mem_clock(D1),
+    oro_memory:expire(myself, shortterm, [D1]),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Holds),
+    agm_mem_deadline_list(myself, Ds),
+    agm_mem_clock(D2),
+    oro_memory_sync,
+    test_bool(agm_mem_gone(myself, "f p o"), Gone),
+    oro_memory_deadlines(myself, Left).
+
+%   The same through the scheduler: this thread holds the store's write
+%   lock when the clock reaches D1, so the scheduler (idle: synced
+%   before) takes the wake-up, pops D1 and waits for the lock; the fact
+%   is refreshed before the lock is released.  Whether or not the
+%   scheduler got as far as popping D1 first (the wait for its queue to
+%   be empty only makes it likely), the fact must stay.
+
+test(refresh_while_forgetting_waits,
+     [ setup(agm_mem_clocked),
+       true(r(Holds, Ds) == r(true, [D2-"f p o"]))
+     ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["f p o"], 'SHORTTERM'),
+    D1 is T0 + 500,
+    T1 is T0 + 100,
+    D2 is T1 + 500,
+    oro_memory_sync,
+    oro_store_write(test(refresh),
+                    ( agm_mem_clock(D1),
+                      ignore(test_wait_until(
+                                 message_queue_property(oro_memory_queue,
+                                                        size(0)),
+                                 2)),
+                      agm_mem_clock(T1),
+                      oro_add(myself, ["f p o"], 'SHORTTERM'),
+                      agm_mem_clock(D1)
+                    )),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Holds),
+    agm_mem_deadline_list(myself, Ds).
+
+:- end_tests(agm_mem_clock).
 
 
                  /*******************************

@@ -12,6 +12,7 @@
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(heaps)).
+:- use_module(library(pairs)).
 :- use_module(library(settings)).
 :- use_module(library(debug)).
 :- use_module(oro_store).
@@ -31,19 +32,30 @@ deadline, and a fact added both as short-term and episodic stays until
 the later deadline.  Only the deadline of each (model, profile, fact)
 is kept here; nothing is reified in the store.
 
-A scheduler thread owns a heap of deadlines and sleeps until the next
-one (no polling).  When deadlines pass it removes the due facts of a
-model and profile in one transaction: forgetting is a change like any
-other, seen by the reasoner and by event watchers.  A deadline is never
-acted on before it is reached; at the default time base a fact is gone
-a few milliseconds after.
+Deadlines are dynamic facts indexed on the deadline, so the facts due
+at a given time are found without looking at the others.  A scheduler
+thread owns a heap of the deadlines of each batch of facts added
+together (Deadline-(Model-Profile)) and sleeps until the earliest one
+(no polling).  When deadlines pass it pops them, and for each model
+and profile removes the facts whose deadline is one of those, in one
+store transaction: forgetting is a change like any other, seen by the
+reasoner and by event watchers.  The facts are picked inside that
+transaction, under the store's write lock, like the deadlines that
+adding a fact sets or refreshes, so a fact refreshed after its old
+deadline was popped is never forgotten by it.  A wake-up costs
+O(log n) per due heap entry and O(1) per due fact, n the number of
+entries pending; facts not due are never looked at.  A deadline is
+never acted on before it is reached; at the default time base a fact
+is gone a few milliseconds after.  Tests may set the module's clock
+(set_test_clock/1) to drive forgetting without waiting.
 */
 
 :- setting(time_base, positive_integer, 1000,
            'Length of one memory time unit, in milliseconds').
 
 :- dynamic
-    deadline/6.                     % Model, Profile, S, P, O, DeadlineMs
+    expiry/6,                       % DeadlineMs, Model, Profile, S, P, O
+    test_clock/1.                   % Milliseconds
 
 %!  oro_memory_profile(+Name, -Profile) is det.
 %
@@ -76,12 +88,13 @@ profile_units(episodic, 300).
 %   Start (or restart) the lifetime in Profile of the Triples that were
 %   just asserted in the Profile graph of Model.  Long-term triples and
 %   triples that were not stored in that graph (they live forever) are
-%   ignored.
+%   ignored.  Must run inside oro_store_write/2, so that setting a
+%   deadline and forgetting are serialised.
 
 oro_memory_remember(Model, Profile, Triples) :-
     (   oro_memory_lifetime(Profile, Lifetime)
-    ->  get_time(Now),
-        Deadline is ceiling(Now * 1000) + Lifetime,
+    ->  now_ms(Now),
+        Deadline is ceiling(Now) + Lifetime,
         oro_graph(Model, profile(Profile), Graph),
         findall(deadline(Model, Profile, S, P, O, Deadline),
                 ( member(rdf(S, P, O), Triples),
@@ -91,16 +104,19 @@ oro_memory_remember(Model, Profile, Triples) :-
         (   Entries == []
         ->  true
         ;   maplist(oro_persist_record, Entries),
-            with_mutex(oro_memory,
-                       forall(member(E, Entries), set_deadline(E))),
+            with_mutex(oro_memory, maplist(set_deadline, Entries)),
             scheduler_send(schedule(Deadline, Model, Profile))
         )
     ;   true
     ).
 
+%   set_deadline(+Record): Record is deadline(Model, Profile, S, P, O,
+%   Deadline), the form journaled by oro_persist.  The lookup by fact
+%   uses the just-in-time index of S, P or O.
+
 set_deadline(deadline(Model, Profile, S, P, O, Deadline)) :-
-    retractall(deadline(Model, Profile, S, P, O, _)),
-    assertz(deadline(Model, Profile, S, P, O, Deadline)).
+    retractall(expiry(_, Model, Profile, S, P, O)),
+    assertz(expiry(Deadline, Model, Profile, S, P, O)).
 
 %!  oro_memory_deadlines(+Model, -Deadlines) is det.
 %
@@ -108,16 +124,16 @@ set_deadline(deadline(Model, Profile, S, P, O, Deadline)) :-
 %   milliseconds since the epoch, earliest first.
 
 oro_memory_deadlines(Model, Deadlines) :-
-    findall(D-rdf(S, P, O)-Profile, deadline(Model, Profile, S, P, O, D),
+    findall(D-rdf(S, P, O)-Profile, expiry(D, Model, Profile, S, P, O),
             Deadlines0),
     keysort(Deadlines0, Deadlines).
 
 %!  oro_memory_reset is det.
 %
-%   Forget every deadline (reset).
+%   Forget every deadline (reset).  The scheduler drops them with its
+%   heap, so that no deadline set meanwhile is left without an entry.
 
 oro_memory_reset :-
-    with_mutex(oro_memory, retractall(deadline(_, _, _, _, _, _))),
     scheduler_call(reset).
 
 %!  oro_memory_restore is det.
@@ -132,8 +148,8 @@ oro_memory_restore :-
     oro_persist_records(Records),
     rb_empty(Known0),
     foldl(record_deadline, Records, Known0, Known),
-    get_time(NowS),
-    Now is ceiling(NowS * 1000),
+    now_ms(NowMs),
+    Now is ceiling(NowMs),
     findall(deadline(Model, Profile, S, P, O, D),
             ( oro_model(Model),
               member(Profile, [shortterm, episodic]),
@@ -146,7 +162,7 @@ oro_memory_restore :-
               )
             ),
             Entries),
-    with_mutex(oro_memory, forall(member(E, Entries), set_deadline(E))),
+    with_mutex(oro_memory, maplist(set_deadline, Entries)),
     findall(D-(Model-Profile), member(deadline(Model, Profile, _, _, _, D), Entries),
             Keys0),
     sort(Keys0, Keys),
@@ -166,7 +182,7 @@ record_deadline(_, T, T).
 
 oro_persist:live_records(Records) :-
     findall(deadline(Model, Profile, S, P, O, D),
-            deadline(Model, Profile, S, P, O, D),
+            expiry(D, Model, Profile, S, P, O),
             Records).
 
 %!  oro_memory_sync is det.
@@ -177,12 +193,50 @@ oro_memory_sync :-
     scheduler_call(sync).
 
 		 /*******************************
+		 *            CLOCK             *
+		 *******************************/
+
+%   now_ms(-Milliseconds): the time since the epoch, from the system
+%   clock unless a test set the clock (set_test_clock/1).
+
+now_ms(Ms) :-
+    (   test_clock(Ms0)
+    ->  Ms = Ms0
+    ;   get_time(Now),
+        Ms is Now * 1000
+    ).
+
+%   set_test_clock(+Clock): for tests only.  Clock is a time in
+%   milliseconds since the epoch, which the memory module then takes for
+%   "now" (deadlines are set and acted on by it) until it is set again,
+%   or `system` for the system clock.  The new time is asserted before
+%   the old one is retracted, so that the scheduler never sees the
+%   system clock meanwhile.  The scheduler looks at the clock again at
+%   once; a test drives forgetting with set_test_clock/1 and
+%   oro_memory_sync/0.
+
+set_test_clock(Clock) :-
+    (   Clock == system
+    ->  retractall(test_clock(_))
+    ;   must_be(integer, Clock),
+        asserta(test_clock(Clock), Ref),
+        forall(clause(test_clock(_), true, Old),
+               (   Old == Ref
+               ->  true
+               ;   erase(Old)
+               ))
+    ),
+    scheduler_send(wake).
+
+		 /*******************************
 		 *           SCHEDULER          *
 		 *******************************/
 
 %   The scheduler's heap holds Deadline-(Model-Profile) entries, one per
-%   batch of facts added together: when one is due, every fact of that
-%   model and profile whose deadline has passed is forgotten.
+%   batch of facts added together.  When an entry is due, the facts of
+%   that model and profile whose deadline is still that one are
+%   forgotten; an entry whose facts were refreshed or forgotten since
+%   finds none.
 
 scheduler_send(Message) :-
     ensure_scheduler,
@@ -207,12 +261,20 @@ ensure_scheduler :-
                        ->  true
                        ;   message_queue_create(_, [alias(oro_memory_queue)])
                        ),
+                       catch(thread_join(oro_memory, _), _, true),
                        thread_create(scheduler, _, [alias(oro_memory)])
                    ))
     ).
 
+%   A scheduler (re)started finds its heap in the deadlines pending.
+
 scheduler :-
-    empty_heap(Heap),
+    with_mutex(oro_memory,
+               findall(D-(Model-Profile),
+                       expiry(D, Model, Profile, _, _, _),
+                       Pairs0)),
+    sort(Pairs0, Pairs),
+    list_to_heap(Pairs, Heap),
     scheduler(Heap).
 
 scheduler(Heap0) :-
@@ -228,43 +290,70 @@ scheduler(Heap0) :-
 
 next_timeout(Heap, Options) :-
     (   min_of_heap(Heap, Deadline, _)
-    ->  get_time(Now),
-        Wait is max(0, (Deadline - Now * 1000) / 1000),
+    ->  now_ms(Now),
+        Wait is max(0, (Deadline - Now) / 1000),
         Options = [timeout(Wait)]
     ;   Options = []
     ).
 
 handle(schedule(Deadline, Model, Profile), Heap0, Heap) :-
     add_to_heap(Heap0, Deadline, Model-Profile, Heap).
+handle(wake, Heap, Heap).
 handle(call(reset, Thread, Tag), _, Heap) :-
+    with_mutex(oro_memory, retractall(expiry(_, _, _, _, _, _))),
     empty_heap(Heap),
     thread_send_message(Thread, reply(Tag, done)).
 handle(call(sync, Thread, Tag), Heap0, Heap) :-
     expire_due(Heap0, Heap),
     thread_send_message(Thread, reply(Tag, done)).
 
-expire_due(Heap0, Heap) :-
-    get_time(NowS),
-    Now is floor(NowS * 1000),
-    due(Heap0, Now, Keys0, Heap),
-    sort(Keys0, Keys),
-    forall(member(Model-Profile, Keys),
-           forget(Model, Profile, Now)).
+%   expire_due(+Heap0, -Heap): pop the entries that are due and forget,
+%   model and profile after model and profile, the facts still due at
+%   their deadlines.
 
-due(Heap0, Now, [Key|Keys], Heap) :-
+expire_due(Heap0, Heap) :-
+    now_ms(NowMs),
+    Now is floor(NowMs),
+    due(Heap0, Now, Due, Heap),
+    (   Due == []
+    ->  true
+    ;   sort(Due, Pairs),
+        group_pairs_by_key(Pairs, Groups),
+        forall(member((Model-Profile)-Deadlines, Groups),
+               expire(Model, Profile, Deadlines))
+    ).
+
+due(Heap0, Now, [Key-Deadline|Due], Heap) :-
     min_of_heap(Heap0, Deadline, Key),
     Deadline =< Now,
     !,
     get_from_heap(Heap0, _, _, Heap1),
-    due(Heap1, Now, Keys, Heap).
+    due(Heap1, Now, Due, Heap).
 due(Heap, _, [], Heap).
 
-forget(Model, Profile, Now) :-
+%   expire(+Model, +Profile, +Deadlines): forget the facts of Model and
+%   Profile whose deadline is one of Deadlines (popped from the heap),
+%   as they are when the store's write lock is held.  No transaction is
+%   made when no fact has these deadlines any more.
+
+expire(Model, Profile, Deadlines) :-
+    (   member(D, Deadlines),
+        expiry(D, Model, Profile, _, _, _)
+    ->  oro_store_write(forget(Model, Profile),
+                        forget(Model, Profile, Deadlines))
+    ;   true
+    ).
+
+%   forget(+Model, +Profile, +Deadlines): runs inside oro_store_write/2.
+%   The deadlines are dropped with their facts, in the same critical
+%   section as they are read.
+
+forget(Model, Profile, Deadlines) :-
     with_mutex(oro_memory,
                findall(rdf(S, P, O),
-                       ( deadline(Model, Profile, S, P, O, D),
-                         D =< Now,
-                         retract(deadline(Model, Profile, S, P, O, D))
+                       ( member(D, Deadlines),
+                         clause(expiry(D, Model, Profile, S, P, O), true, Ref),
+                         erase(Ref)
                        ),
                        Triples)),
     (   Triples == []
@@ -272,7 +361,6 @@ forget(Model, Profile, Now) :-
     ;   oro_model(Model)
     ->  length(Triples, N),
         debug(oro(memory), 'Forgetting ~D ~w facts of ~q', [N, Profile, Model]),
-        oro_store_write(forget(Model, Profile),
-                        oro_store_forget(Model, Profile, Triples))
+        oro_store_forget(Model, Profile, Triples)
     ;   true
     ).
