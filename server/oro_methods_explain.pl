@@ -26,6 +26,15 @@ is a list with one map per statement, in the order given:
   - `statement`: the statement as understood (names contracted);
   - `entailed`: `true` if it holds in the model (asserted or inferred),
     else `false`, and then the map has no other key;
+  - `explained`: only in a map whose statement holds by a derivation
+    oro_explain/3 cannot replay (it answers unexplained(Statement):
+    its proof search gave up, on a derivation nested deeper than 64 or
+    needing a goal already in progress), and then always `false`, in
+    place of `asserted` and `axioms`:
+
+        {"statement":"x rdf:type C","entailed":true,"explained":false}
+
+    A map with `asserted` and `axioms` has no `explained` key;
   - `asserted`: the asserted statements the derivation uses;
   - `axioms`: the schema axioms it uses.  Anonymous classes are
     written inline: `(hasColour value red)`, `(owns some Dog)`,

@@ -14,8 +14,13 @@
         consistent counterpart;
       - the incremental check agreeing with the full one statement by
         statement;
+      - checkConsistency and safeAdd after plain changes: the verdict
+        carried over by the delta log (incremental check of what was
+        added, nothing to check for removals) where it can be, a full
+        check where it cannot, and always the full check's answer;
       - update on functional properties;
       - the remembered verdict following every change;
+      - safeAdd with a memory profile over the socket;
       - an inconsistent model still answering every request.
 
     Fixtures: test/fixtures/testsuite.ttl, test/fixtures/rl_conflicts.ttl.
@@ -26,6 +31,13 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(pairs)).
+:- use_module(library(random)).
+:- use_module(library(settings)).
+:- use_module(library(debug)).
+:- use_module(library(oro/oro_memory)).
+:- use_module(library(oro/oro_store)).
+:- use_module(library(oro/oro_parse)).
 
 %   Stores: the test ontology, or the fixture of conflicts.
 
@@ -72,6 +84,64 @@ cons_case(Base, Bad, r(With, Safe, Visible, After, Kinds)) :-
 cons_ok(Base, Good) :-
     cons_case(Base, Good, r(true, true, true, true, [])).
 
+%   cons_candidates(-Statements): statements over the conflicts
+%   fixture, some conflicting with others.
+
+cons_candidates([ "q1 rdf:type Rock", "q1 grows moss", "q2 grows moss",
+                  "q3 rdf:type Solid", "q3 rdf:type Liquid", "q4 rdf:type Slush",
+                  "kid hasMother alice", "kid hasMother ally", "ally owl:sameAs alice",
+                  "kid hasMother beth", "h1 isBiggerThan h2", "h2 isBiggerThan h3",
+                  "h3 isBiggerThan h1", "h3 isBiggerThan h4", "k1 isParentOf k2",
+                  "k2 isParentOf k3", "k3 isGrandparentOf k1", "k1 isGrandparentOf k3",
+                  "cel rdf:type Cellar", "cel stores q2", "cel stores q5",
+                  "cv rdf:type Carnivore", "cv feedsOn q6", "q6 grows moss",
+                  "rb rdf:type Robot", "rb hasMother factory2",
+                  "rb2 hasMother factory2", "rb2 rdf:type Robot",
+                  "me likes tea", "me adores tea", "me hates tea", "me hates milk",
+                  "n2 rdf:type Impossible", "tagged wears tag9", "alice wears tag9"
+                ]).
+
+%   cons_checks(:Goal, -Kinds): run Goal and collect the kinds of the
+%   checks oro_consistency made meanwhile (`full`, `incremental`,
+%   `unchanged`), from its debug messages (not printed meanwhile).
+
+:- multifile prolog:debug_print_hook/3.
+:- dynamic cons_recording/0, cons_check_kind/1.
+
+prolog:debug_print_hook(oro(consistency), _, Args0) :-
+    cons_recording,
+    strip_module(Args0, _, Args),
+    (   Args = [_, _, _, Kind]
+    ->  assertz(cons_check_kind(Kind))
+    ;   true
+    ).
+
+:- meta_predicate cons_checks(0, -).
+
+cons_checks(Goal, Kinds) :-
+    retractall(cons_check_kind(_)),
+    setup_call_cleanup(
+        ( assertz(cons_recording),
+          debug(oro(consistency))
+        ),
+        once(Goal),
+        ( nodebug(oro(consistency)),
+          retractall(cons_recording)
+        )),
+    findall(K, retract(cons_check_kind(K)), Kinds).
+
+%   cons_verdict_checks(-Verdict, -Kinds): checkConsistency and the
+%   kinds of check it made.
+
+cons_verdict_checks(Verdict, Kinds) :-
+    cons_checks(test_bool(oro_consistent(myself), Verdict), Kinds).
+
+%   cons_full(-Verdict): the verdict of a full check, whatever is
+%   remembered.
+
+cons_full(Verdict) :-
+    test_bool(\+ oro_conflict(myself, _), Verdict).
+
 
                  /*******************************
                  *       §13.5 OVER SOCKETS     *
@@ -84,6 +154,32 @@ cons_ok(Base, Good) :-
 
 cons_fresh :-
     test_ok(reset, []).
+
+%   cons_fresh_long_units(-Units): cons_fresh with memory time units of
+%   1,000 s (Units, the previous length, to restore): a short-term fact
+%   lives 10,000 s, so a test never depends on how fast it runs.
+
+cons_fresh_long_units(Units) :-
+    setting(oro_memory:time_base, Units),
+    set_setting(oro_memory:time_base, 1000000),
+    cons_fresh.
+
+%   cons_profiles(+Statement, -Profiles): the memory profiles in which
+%   the asserted Statement has a deadline (none for long-term facts).
+
+cons_profiles(Statement, Profiles) :-
+    oro_statements([Statement], [rdf(S, P, O)], _),
+    oro_memory_deadlines(myself, Deadlines),
+    findall(Profile, member(_-rdf(S, P, O)-Profile, Deadlines), Profiles0),
+    sort(Profiles0, Profiles).
+
+%   cons_in_graph(+Statement, +Profile, -Bool): Statement is stored in
+%   the graph of Profile of myself.
+
+cons_in_graph(Statement, Profile, Bool) :-
+    oro_statements([Statement], [rdf(S, P, O)], _),
+    oro_graph(myself, profile(Profile), Graph),
+    test_bool(rdf(S, P, O, Graph), Bool).
 
 test(disjoint_added_and_cleared,
      [ setup(cons_fresh),
@@ -151,6 +247,27 @@ test(update,
     test_set_call(find, [a, Patterns], A2),
     test_set_call(find, [c, Patterns], C2),
     Values = [C, A1, W1, L, A2, C2].
+test(safe_add_short_term,
+     [ setup(cons_fresh_long_units(Units)),
+       cleanup(set_setting(oro_memory:time_base, Units)),
+       true(Values == ["true", [shortterm], true, "false", [shortterm], [], false])
+     ]) :-
+    test_ok(safeAdd, ['[horse rdf:type Animal]', 'SHORTTERM'], V1),
+    cons_profiles("horse rdf:type Animal", P1),
+    cons_in_graph("horse rdf:type Animal", shortterm, G1),
+    test_ok(safeAdd, ['[mule rdf:type Animal, mule rdf:type Plant]', 'shortterm'], V2),
+    cons_profiles("mule rdf:type Animal", P2),
+    cons_profiles("mule rdf:type Plant", P3),
+    test_bool(oro_check(myself, ["mule rdf:type Plant"]), G3),
+    Values = [V1, P1, G1, V2, P2, P3, G3].
+test(safe_add_long_term_by_default,
+     [ setup(cons_fresh),
+       true(Values == ["true", [], true])
+     ]) :-
+    test_ok(safeAdd, ['[horse rdf:type Animal]'], V1),
+    cons_profiles("horse rdf:type Animal", P1),
+    cons_in_graph("horse rdf:type Animal", longterm, G1),
+    Values = [V1, P1, G1].
 test(safe_add_refused_while_inconsistent,
      [ setup(cons_fresh),
        true(Values == ["false", "false", "true", "true"])
@@ -192,9 +309,16 @@ test(all_disjoint_classes_other_members, []) :-
 test(complement_of,
      [ true(R == r(false, false, false, false, [disjoint])) ]) :-
     cons_case(["f1 rdf:type Fake"], ["f1 rdf:type Genuine"], R).
+test(complement_of_other_individual, []) :-
+    cons_ok(["f1 rdf:type Fake"], ["f2 rdf:type Genuine"]).
 test(nothing,
      [ true(R == r(false, false, false, false, [nothing])) ]) :-
     cons_case(["n0 rdf:type Genuine"], ["n1 rdf:type Impossible"], R).
+test(nothing_through_sub_class,
+     [ true(R == r(false, false, false, false, [nothing])) ]) :-
+    cons_case(["n0 rdf:type Fiction"], ["u1 rdf:type Unicorn"], R).
+test(nothing_super_class_ok, []) :-
+    cons_ok(["n0 rdf:type Genuine"], ["n1 rdf:type Fiction"]).
 test(functional_literals,
      [ true(R == r(false, false, false, false, [functional])) ]) :-
     cons_case(["bob birthYear 1990"], ["bob birthYear 1991"], R).
@@ -228,6 +352,10 @@ test(inverse_functional_literal,
 test(same_as_and_different_from,
      [ true(R == r(false, false, false, false, [same_and_different])) ]) :-
     cons_case(["x1 owl:differentFrom y1"], ["x1 owl:sameAs y1"], R).
+test(same_as_and_different_from_others_ok, []) :-
+    cons_ok(["x1 owl:differentFrom y1"], ["x1 owl:sameAs z1", "z1 owl:sameAs w1"]).
+test(same_as_and_all_different_others_ok, []) :-
+    cons_ok(["al owl:sameAs alice"], ["al owl:sameAs ally", "bo owl:sameAs beth"]).
 test(same_as_and_all_different,
      [ true(R == r(false, false, false, false, [same_and_different])) ]) :-
     cons_case(["al owl:sameAs alice"], ["al owl:sameAs carol"], R).
@@ -317,19 +445,6 @@ test(chain_ok, []) :-
 
 :- begin_tests(consistency_incremental).
 
-cons_candidates([ "q1 rdf:type Rock", "q1 grows moss", "q2 grows moss",
-                  "q3 rdf:type Solid", "q3 rdf:type Liquid", "q4 rdf:type Slush",
-                  "kid hasMother alice", "kid hasMother ally", "ally owl:sameAs alice",
-                  "kid hasMother beth", "h1 isBiggerThan h2", "h2 isBiggerThan h3",
-                  "h3 isBiggerThan h1", "h3 isBiggerThan h4", "k1 isParentOf k2",
-                  "k2 isParentOf k3", "k3 isGrandparentOf k1", "k1 isGrandparentOf k3",
-                  "cel rdf:type Cellar", "cel stores q2", "cel stores q5",
-                  "cv rdf:type Carnivore", "cv feedsOn q6", "q6 grows moss",
-                  "rb rdf:type Robot", "rb hasMother factory2",
-                  "rb2 hasMother factory2", "rb2 rdf:type Robot",
-                  "me likes tea", "me adores tea", "me hates tea", "me hates milk",
-                  "n2 rdf:type Impossible", "tagged wears tag9", "alice wears tag9"
-                ]).
 
 cons_full_verdict(Statement, Verdict) :-
     oro_add(myself, [Statement]),
@@ -358,6 +473,179 @@ test(batch_keeps_the_consistent_ones,
             ["q1 rdf:type Rock", "q1 grows moss", "q2 grows moss"], Kept).
 
 :- end_tests(consistency_incremental).
+
+
+                 /*******************************
+                 *   VERDICTS AFTER A CHANGE    *
+                 *******************************/
+
+%   After a plain add or remove, the remembered verdict is carried over
+%   through the delta log: an incremental check of what was added, no
+%   check for what was removed; a full check where the log cannot tell.
+%   Each test also compares the verdict with a full check's.
+
+:- begin_tests(consistency_delta).
+
+test(check_after_add_is_incremental,
+     [ setup(cons_conflicts),
+       true(R == [true-[full], true-[incremental], true, false-[incremental], false])
+     ]) :-
+    cons_verdict_checks(V1, K1),
+    oro_add(myself, ["r1 rdf:type Rock"]),
+    cons_verdict_checks(V2, K2),
+    cons_full(F2),
+    oro_add(myself, ["r1 grows moss"]),
+    cons_verdict_checks(V3, K3),
+    cons_full(F3),
+    R = [V1-K1, V2-K2, F2, V3-K3, F3].
+test(safe_add_after_add_is_incremental,
+     [ setup(cons_conflicts),
+       true(R == [true-[incremental], false-[incremental], false])
+     ]) :-
+    assertion(oro_consistent(myself)),
+    oro_add(myself, ["w1 rdf:type Solid"]),
+    cons_checks(oro_safe_add(myself, ["w2 rdf:type Gas"], longterm, A1), K1),
+    oro_add(myself, ["w3 rdf:type Solid"]),
+    cons_checks(oro_safe_add(myself, ["w3 rdf:type Gas"], longterm, A2), K2),
+    test_bool(oro_check(myself, ["w3 rdf:type Gas"]), Kept),
+    R = [A1-K1, A2-K2, Kept].
+test(check_consistency_of_statements_after_add,
+     [ setup(cons_conflicts),
+       true(R == [false-[incremental], true-[]])
+     ]) :-
+    assertion(oro_consistent(myself)),
+    oro_add(myself, ["w1 rdf:type Solid"]),
+    cons_checks(test_bool(oro_consistent_with(myself, ["w1 rdf:type Gas"]), V1), K1),
+    cons_checks(test_bool(oro_consistent_with(myself, ["w2 rdf:type Gas"]), V2), K2),
+    R = [V1-K1, V2-K2].
+test(removal_needs_no_check,
+     [ setup(cons_conflicts),
+       true(R == [true-[incremental], true])
+     ]) :-
+    oro_add(myself, ["r1 rdf:type Rock", "r2 grows moss"]),
+    assertion(oro_consistent(myself)),
+    oro_remove(myself, ["r1 rdf:type Rock"]),
+    cons_verdict_checks(V, K),
+    cons_full(F),
+    R = [V-K, F].
+test(inconsistent_stays_so_after_adds,
+     [ setup(cons_conflicts),
+       true(R == [false-[unchanged], false])
+     ]) :-
+    oro_add(myself, ["r1 rdf:type Rock", "r1 grows moss"]),
+    assertion(\+ oro_consistent(myself)),
+    oro_add(myself, ["r2 grows moss"]),
+    cons_verdict_checks(V, K),
+    cons_full(F),
+    R = [V-K, F].
+test(removal_from_inconsistent_is_a_full_check,
+     [ setup(cons_conflicts),
+       true(R == [true-[full], true])
+     ]) :-
+    oro_add(myself, ["r1 rdf:type Rock", "r1 grows moss"]),
+    assertion(\+ oro_consistent(myself)),
+    oro_remove(myself, ["r1 grows moss"]),
+    cons_verdict_checks(V, K),
+    cons_full(F),
+    R = [V-K, F].
+test(update_is_incremental,
+     [ setup(cons_conflicts),
+       true(R == [true-[incremental], true])
+     ]) :-
+    oro_add(myself, ["kid hasMother alice"]),
+    assertion(oro_consistent(myself)),
+    oro_update(myself, ["kid hasMother beth"]),
+    cons_verdict_checks(V, K),
+    cons_full(F),
+    R = [V-K, F].
+test(schema_change_is_a_full_check,
+     [ setup(cons_conflicts),
+       true(R == [false-[full], true-[full]])
+     ]) :-
+    oro_add(myself, ["w1 rdf:type Solid", "w1 rdf:type Crystal"]),
+    assertion(oro_consistent(myself)),
+    oro_add(myself, ["Crystal owl:disjointWith Solid"]),
+    cons_verdict_checks(V1, K1),
+    oro_remove(myself, ["Crystal owl:disjointWith Solid"]),
+    cons_verdict_checks(V2, K2),
+    R = [V1-K1, V2-K2].
+test(unmasked_ontology_triple_is_an_addition,
+     [ setup(cons_testsuite),
+       true(R == [true, true-[incremental], false-[incremental], false])
+     ]) :-
+    oro_remove(myself, ["gorilla age 12"]),
+    test_bool(oro_consistent(myself), V1),
+    oro_add(myself, ["gorilla age 21"]),
+    cons_verdict_checks(V2, K2),
+    oro_add(myself, ["gorilla age 12"]),        % the ontology's triple again
+    cons_verdict_checks(V3, K3),
+    cons_full(F3),
+    R = [V1, V2-K2, V3-K3, F3].
+test(other_models_changes,
+     [ setup(cons_conflicts),
+       true(R == [true-[incremental], false])
+     ]) :-
+    oro_create_agent(other, other),
+    assertion(oro_consistent(myself)),
+    oro_add(other, ["w1 rdf:type Solid", "w1 rdf:type Gas"]),
+    cons_verdict_checks(V1, K1),
+    test_bool(oro_consistent(other), V2),
+    R = [V1-K1, V2].
+test(reset_forgets,
+     [ setup(cons_conflicts),
+       true(R == [false, true])
+     ]) :-
+    oro_add(myself, ["w1 rdf:type Solid", "w1 rdf:type Gas"]),
+    test_bool(oro_consistent(myself), V1),
+    oro_reset,
+    test_bool(oro_consistent(myself), V2),
+    R = [V1, V2].
+test(large_delta_is_a_full_check,
+     [ setup(cons_conflicts),
+       true(R == [true-[full], false-[incremental]])
+     ]) :-
+    assertion(oro_consistent(myself)),
+    findall(S, ( between(1, 1100, I),
+                 format(string(S), "stone~d rdf:type Rock", [I])
+               ), Stones),
+    oro_add(myself, Stones),
+    cons_verdict_checks(V1, K1),
+    oro_add(myself, ["stone7 grows moss"]),
+    oro_add(myself, Stones),                % nothing new, nothing logged
+    cons_verdict_checks(V2, K2),
+    R = [V1-K1, V2-K2].
+
+%   Random adds, removes and updates of the candidate statements: after
+%   each, the remembered (incremental) verdict is the full check's.
+
+cons_random_change(Statements) :-
+    random_member(S, Statements),
+    random_between(1, 10, R),
+    (   R =< 1
+    ->  oro_update(myself, [S])
+    ;   oro_check(myself, [S])
+    ->  oro_remove(myself, [S])
+    ;   oro_add(myself, [S])
+    ).
+
+test(random_changes_agree,
+     [ setup(cons_conflicts),
+       true(Disagreements-Kinds == []-[full, incremental, unchanged])
+     ]) :-
+    cons_candidates(Statements),
+    set_random(seed(5)),
+    findall(Kind-(N-V-F),
+            ( between(1, 300, N),
+              cons_random_change(Statements),
+              cons_verdict_checks(V, Ks),
+              member(Kind, Ks),
+              cons_full(F)
+            ), Results),
+    findall(N-V-F, ( member(_-(N-V-F), Results), V \== F ), Disagreements),
+    pairs_keys(Results, Kinds0),
+    sort(Kinds0, Kinds).
+
+:- end_tests(consistency_delta).
 
 
                  /*******************************
@@ -453,7 +741,7 @@ test(per_model,
 test(keeps_answering,
      [ setup(test_ok(reset, [])),
        true(Values == ["false", "true", ["cow", "gorilla"], ["Animal", "Plant"],
-                       "false"])
+                       "false", true, "false"])
      ]) :-
     test_ok(add, ['[cow rdf:type Plant, gorilla eats grass]']),
     test_ok(checkConsistency, [], V1),
@@ -463,7 +751,10 @@ test(keeps_answering,
     test_map(Reply, Pairs),
     findall(C, ( member(C-_, Pairs), memberchk(C, ["Animal", "Plant"]) ), V4),
     test_ok(safeAdd, ['[horse rdf:type Animal]'], V5),
-    Values = [V1, V2, V3, V4, V5].
+    test_set_call(lookup, [cow], Found),
+    test_bool(memberchk(["cow", "INSTANCE"], Found), V6),
+    test_ok(checkConsistency, [], V7),
+    Values = [V1, V2, V3, V4, V5, V6, V7].
 test(events_keep_working,
      [ setup(test_ok(reset, [])),
        true(Event = event(Id, _))

@@ -228,6 +228,42 @@ test(every_inference_explained,
 
 
                  /*******************************
+                 *     TRANSITIVE, REFLEXIVE    *
+                 *******************************/
+
+%   `x P x` through a transitive property rests on the steps of a cycle
+%   back to x, never on an empty path.
+
+:- begin_tests(explain_transitive_cycle).
+
+test(reflexive_through_cycle,
+     [ setup(ex_conflicts(["e1 isBiggerThan e2", "e2 isBiggerThan e3",
+                           "e3 isBiggerThan e1"])),
+       true(F-A == ['e1 isBiggerThan e2', 'e2 isBiggerThan e3', 'e3 isBiggerThan e1']-
+                   ['isBiggerThan rdf:type owl:TransitiveProperty'])
+     ]) :-
+    ex_explain("e1 isBiggerThan e1", F, A).
+test(reflexive_asserted_loop,
+     [ setup(ex_conflicts(["big1 isBiggerThan big1"])),
+       true(F-A == ['big1 isBiggerThan big1']-[])
+     ]) :-
+    ex_explain("big1 isBiggerThan big1", F, A).
+test(reflexive_through_sub_property_cycle,
+     [ setup(ex_testsuite),
+       true(F == ['c1 isOn c2', 'c2 isOn c1'])
+     ]) :-
+    oro_add(myself, ["c1 isOn c2", "c2 isOn c1"]),
+    ex_explain("c1 isAt c1", F, _).
+test(not_reflexive_without_cycle,
+     [ setup(ex_conflicts(["e1 isBiggerThan e2", "e2 isBiggerThan e3"])),
+       fail
+     ]) :-
+    oro_explain(myself, "e1 isBiggerThan e1", _).
+
+:- end_tests(explain_transitive_cycle).
+
+
+                 /*******************************
                  *          CONFLICTS           *
                  *******************************/
 
@@ -301,6 +337,95 @@ test(one_conflict, [ setup(ex_testsuite),
     oro_explain_conflict(myself, disjoint(Cow, Animal, Plant), conflict(_, Fs, _)),
     findall(T, member(fact(T, _), Fs), Ts),
     ex_texts(Ts, Facts).
+
+test(nothing, [ setup(ex_conflicts(["n0 rdf:type Genuine", "n1 rdf:type Impossible"])),
+                true(Cs-Key == [nothing-['n1 rdf:type Impossible']]-true)
+              ]) :-
+    ex_conflict_texts(Cs),
+    oro_explain_conflict(myself, [conflict(_, _, Axioms)]),
+    ex_texts(Axioms, As),
+    test_bool(memberchk('Impossible owl:equivalentClass owl:Nothing', As), Key).
+test(inverse_functional, [ setup(ex_conflicts(["alice wears tag1", "beth wears tag1",
+                                               "t3 wears tag2"])),
+                           true(Cs == [inverse_functional-['alice wears tag1',
+                                                           'beth wears tag1']])
+                         ]) :-
+    ex_conflict_texts(Cs).
+test(inverse_functional_axioms, [ setup(ex_conflicts(["alice wears tag1",
+                                                      "beth wears tag1"])),
+                                  true(As == ['_ owl:distinctMembers _',
+                                              '_ rdf:first alice', '_ rdf:first beth',
+                                              '_ rdf:first carol', '_ rdf:rest _',
+                                              '_ rdf:rest rdf:nil',
+                                              '_ rdf:type owl:AllDifferent',
+                                              'wears rdf:type owl:InverseFunctionalProperty'])
+                                ]) :-
+    oro_explain_conflict(myself, [conflict(_, _, Axioms)]),
+    ex_texts(Axioms, As).
+test(same_and_different, [ setup(ex_conflicts(["x1 owl:differentFrom y1",
+                                               "x1 owl:sameAs y1", "x2 owl:sameAs y2"])),
+                           true(Cs == [same_and_different-['x1 owl:differentFrom y1',
+                                                           'x1 owl:sameAs y1']])
+                         ]) :-
+    ex_conflict_texts(Cs).
+test(irreflexive_asserted, [ setup(ex_conflicts(["big1 isBiggerThan small1",
+                                                 "big1 isBiggerThan big1"])),
+                             true(Cs-As == [irreflexive-['big1 isBiggerThan big1']]-
+                                           ['isBiggerThan rdf:type owl:IrreflexiveProperty'])
+                           ]) :-
+    ex_conflict_texts(Cs),
+    oro_explain_conflict(myself, [conflict(_, _, Axioms)]),
+    ex_texts(Axioms, As).
+test(irreflexive_through_cycle, [ setup(ex_conflicts(["e1 isBiggerThan e2",
+                                                      "e2 isBiggerThan e3",
+                                                      "e3 isBiggerThan e1",
+                                                      "e3 isBiggerThan e4"])),
+                                  true(Sets-Axioms ==
+                                       [['e1 isBiggerThan e2', 'e2 isBiggerThan e3',
+                                         'e3 isBiggerThan e1']]-
+                                       ['isBiggerThan rdf:type owl:IrreflexiveProperty',
+                                        'isBiggerThan rdf:type owl:TransitiveProperty'])
+                                ]) :-
+    oro_explain_conflict(myself, Conflicts),
+    findall(Fs, ( member(conflict(irreflexive(_, _), Facts, _), Conflicts),
+                  findall(T, member(fact(T, _), Facts), Ts),
+                  ex_texts(Ts, Fs)
+                ), Sets0),
+    sort(Sets0, Sets),
+    findall(A, ( member(conflict(irreflexive(_, _), _, As0), Conflicts),
+                 ex_texts(As0, As),
+                 member(A, As)
+               ), Axioms0),
+    sort(Axioms0, Axioms).
+test(irreflexive_each_of_the_cycle, [ setup(ex_conflicts(["e1 isBiggerThan e2",
+                                                          "e2 isBiggerThan e3",
+                                                          "e3 isBiggerThan e1"])),
+                                      true(Sizes == [3, 3, 3])
+                                    ]) :-
+    rdf_equal(oro:isBiggerThan, P),
+    findall(N, ( member(X0, [e1, e2, e3]),
+                 oro_name_iri(X0, X),
+                 oro_explain_conflict(myself, irreflexive(P, X), conflict(_, Fs, _)),
+                 length(Fs, N)
+               ), Sizes).
+test(asymmetric, [ setup(ex_conflicts(["a1 isParentOf b1", "b1 isParentOf a1",
+                                       "b1 isParentOf c1"])),
+                   true(Cs-As == [asymmetric-['a1 isParentOf b1', 'b1 isParentOf a1']]-
+                                 ['isParentOf rdf:type owl:AsymmetricProperty'])
+                 ]) :-
+    ex_conflict_texts(Cs),
+    oro_explain_conflict(myself, [conflict(_, _, Axioms)]),
+    ex_texts(Axioms, As).
+test(disjoint_properties, [ setup(ex_conflicts(["ann adores coffee", "ann hates coffee",
+                                                "ann hates tea"])),
+                            true(Cs-As == [disjoint_properties-['ann adores coffee',
+                                                                'ann hates coffee']]-
+                                          ['adores rdfs:subPropertyOf likes',
+                                           'likes owl:propertyDisjointWith hates'])
+                          ]) :-
+    ex_conflict_texts(Cs),
+    oro_explain_conflict(myself, [conflict(_, _, Axioms)]),
+    ex_texts(Axioms, As).
 
 :- end_tests(explain_conflicts).
 

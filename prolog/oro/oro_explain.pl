@@ -454,16 +454,26 @@ link_step(inverse(P), S, O, Ctx, L0, L) :-
 link_step(P, S, O, Ctx, L0, L) :-
     prove(holds(S, P, O), Ctx, L0, L).
 
-%   transitive_path(+T, +From, +To, ...): a path of single T steps,
-%   breadth first through the nodes that T reaches from From and that
-%   reach To.
+%   transitive_path(+T, +From, +To, ...): a path of one or more single
+%   T steps, breadth first through the nodes that T reaches from From.
+%   At least one step: when From == To (`x P x` through a cycle) the
+%   path is the cycle back to From, never the empty path, which would
+%   explain the statement by nothing.
 
 transitive_path(T, From, To, Ctx, L0, L) :-
     ctx_model(Ctx, Model),
     findall(Y, oro_holds(Model, From, T, Y), Reach0),
     sort(Reach0, Reach),
     ord_memberchk(To, Reach),
-    bfs_path([From-[]], T, To, Reach, Model, [From], Path),
+    findall(Y-[From], ( member(Y, Reach),
+                        single_step(Model, T, From, Y)
+                      ), First),
+    pairs_keys(First, Seen0),
+    (   From == To
+    ->  Seen = Seen0
+    ;   Seen = [From|Seen0]
+    ),
+    bfs_path(First, T, To, Reach, Model, Seen, Path),
     path_steps(Path, T, Ctx, L0, L).
 
 bfs_path([X-Back|_], _, To, _, _, _, Path) :-
