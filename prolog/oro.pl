@@ -41,14 +41,17 @@
             oro_resource_details/4,     % +Model, +Resource, +Lang, -Details
             % events
             oro_subscribe/7,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Id
-            oro_unsubscribe/1,          % +Id
+            oro_subscribe/8,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Subscription, +Options
+            oro_unsubscribe/1,          % +IdOrSubscription
             oro_register_event/7,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, -Id
             oro_register_event/8,       % +Model, +Type, +Trigger, +Var, +Patterns, +Subscriber, +Registry, -Id
             oro_subscriber_create/3,    % :Deliver, -Subscriber, +Options
             oro_subscriber_destroy/1,   % +Subscriber
+            oro_subscriber_destroy/2,   % +Subscriber, +Options
             oro_clear_events/1,         % +Model
             oro_clear_events/2,         % +Model, +Registry
             oro_clear_event/2,          % +Model, +Id
+            oro_clear_event/3,          % +Model, +Registry, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
             % categorization

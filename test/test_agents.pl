@@ -802,6 +802,7 @@ test(unknown_agent_everywhere, [ setup(agm_server_fresh),
                  registerEventForAgent-[nobody, 'FACT_CHECKING', 'ON_TRUE', '[a b c]'],
                  registerEventForAgent-[nobody, 'NEW_INSTANCE', 'ON_TRUE', x, '[?x b c]'],
                  clearEventsForAgent-[nobody],
+                 clearEvent-[nobody, '0b5a8a9e-3d1c-4c2e-9d7e-2f1a6b3c4d5e'],
                  checkConsistencyForAgent-[nobody]
                ],
     test_calls(Requests, Replies),
@@ -915,7 +916,134 @@ test(reset_discards_agents, [ setup(agm_server_fresh),
     test_call(addForAgent, [gerard, '[paris loves dancing]'], Reply),
     agm_list_agents(Names).
 
+%   clearEvent(agent, id).  That nothing fired is shown by a sentinel
+%   watcher in the same registry and model (agm_marker/4): the next
+%   event must be its firing for a new marker.
+
+test(clear_event_for_agent,
+     [ setup(agm_server_fresh),
+       true(Got == [ok(""), S-"[\"agm_m1\"]", EventNotFound, AgentNotFound])
+     ]) :-
+    test_ok(add, ['[gerard rdf:type Agent]']),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEventForAgent,
+                              [gerard, 'FACT_CHECKING', 'ON_TRUE',
+                               '[chicken has teeth]'], ok(U)),
+                     agm_sentinel(Conn, gerard, S),
+                     oro_call(Conn, clearEvent, [gerard, U], R1),
+                     oro_call(Conn, addForAgent, [gerard, '[chicken has teeth]'], ok(_)),
+                     agm_marker(Conn, gerard, agm_m1, Next),
+                     oro_call(Conn, clearEvent, [gerard, U], R2),
+                     oro_call(Conn, clearEvent, [nobody, U], R3)
+                   )),
+    agm_event_not_found(U, EventNotFound),
+    agm_not_found(nobody, AgentNotFound),
+    Got = [R1, Next, R2, R3].
+test(clear_event_for_agent_keeps_registries_apart,
+     [ setup(agm_server_fresh),
+       true(Got == Expected)
+     ]) :-
+    % A plain registerEvent watcher is not in the registry of
+    % clearEvent(agent, id), nor is gerard's in the robot's: both stay.
+    test_ok(add, ['[gerard rdf:type Agent]']),
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEvent,
+                              ['FACT_CHECKING', 'ON_TRUE', '[chicken has teeth]'],
+                              ok(P)),
+                     oro_call(Conn, registerEventForAgent,
+                              [gerard, 'FACT_CHECKING', 'ON_TRUE',
+                               '[chicken has teeth]'], ok(G)),
+                     oro_call(Conn, clearEvent, [myself, P], R1),
+                     oro_call(Conn, clearEvent, [myself, G], R2),
+                     oro_call(Conn, add, ['[chicken has teeth]'], ok(_)),
+                     oro_next_event(Conn, event(Id, Content), 5),
+                     oro_call(Conn, clearEvent, [P], R3),       % plain: found
+                     oro_call(Conn, clearEvent, [gerard, P], R4)
+                   )),
+    agm_event_not_found(P, PlainNotFound),
+    agm_event_not_found(G, GerardNotFound),
+    Got = [R1, R2, Id-Content, R3, R4],
+    Expected = [PlainNotFound, GerardNotFound, P-"", ok(""), PlainNotFound].
+test(event_for_agent_aliases,
+     [ setup(agm_server_fresh),
+       true(Got == [same, same, [U-"[\"bob\"]"], ok(""), S-"[\"agm_m2\"]",
+                    EventNotFound])
+     ]) :-
+    % default, the robot id and myself name one model: one watcher.
+    test_connected(Conn,
+                   ( oro_call(Conn, registerEventForAgent,
+                              [default, 'NEW_INSTANCE', 'ON_TRUE', x,
+                               '[?x likes tea]'], ok(U)),
+                     oro_call(Conn, registerEventForAgent,
+                              ['ROBOT', 'NEW_INSTANCE', 'ON_TRUE', x,
+                               '[?x likes tea]'], ok(U2)),
+                     oro_call(Conn, registerEventForAgent,
+                              [myself, 'NEW_INSTANCE', 'ON_TRUE', x,
+                               '[?x likes tea]'], ok(U3)),
+                     agm_sentinel(Conn, myself, S),
+                     oro_call(Conn, add, ['[bob likes tea]'], ok(_)),
+                     agm_marker(Conn, myself, agm_m1, First),
+                     agm_events_before(Conn, S, First, Events),
+                     oro_call(Conn, clearEvent, ['ROBOT', U], R1),
+                     oro_call(Conn, add, ['[bill likes tea]'], ok(_)),
+                     agm_marker(Conn, myself, agm_m2, Next),
+                     oro_call(Conn, clearEvent, [default, U], R2)
+                   )),
+    maplist(agm_same(U), [U2, U3], Same),
+    agm_event_not_found(U, EventNotFound),
+    append(Same, [Events, R1, Next, R2], Got).
+
 :- end_tests(agm_socket).
+
+%   agm_sentinel(+Conn, +Agent, -Id): a watcher of the markers in the
+%   registry of registerEventForAgent on Agent's model.
+
+agm_sentinel(Conn, Agent, Id) :-
+    oro_call(Conn, registerEventForAgent,
+             [Agent, 'NEW_INSTANCE', 'ON_TRUE', m, '[?m rdf:type EvMarker]'],
+             ok(Id)).
+
+%   agm_marker(+Conn, +Agent, +Marker, -Event): add Marker to Agent's
+%   model; Event is the next event, Id-Content (`timeout` if none
+%   comes within 5 s).
+
+agm_marker(Conn, Agent, Marker, Event) :-
+    format(atom(Statement), '[~w rdf:type EvMarker]', [Marker]),
+    oro_call(Conn, addForAgent, [Agent, Statement], ok(_)),
+    oro_next_event(Conn, Event0, 5),
+    (   Event0 = event(Id, Content)
+    ->  Event = Id-Content
+    ;   Event = Event0
+    ).
+
+%   agm_events_before(+Conn, +Sentinel, +First, -Events): First and the
+%   events after it, up to the sentinel's firing (left out).
+
+agm_events_before(Conn, Sentinel, First, Events) :-
+    (   First = Sentinel-_
+    ->  Events = []
+    ;   First = _-_
+    ->  Events = [First|Rest],
+        oro_next_event(Conn, Event, 5),
+        (   Event = event(Id, Content)
+        ->  agm_events_before(Conn, Sentinel, Id-Content, Rest)
+        ;   Rest = [Event]
+        )
+    ;   Events = [First]
+    ).
+
+agm_same(U, U2, Same) :-
+    (   U2 == U
+    ->  Same = same
+    ;   Same = different(U2)
+    ).
+
+%   agm_event_not_found(+Id, -Reply): the EventNotFoundException reply
+%   for Id.
+
+agm_event_not_found(Id, error("laas.openrobots.ontology.exceptions.EventNotFoundException",
+                              Message)) :-
+    format(string(Message), "Event ~w does not exist in the model", [Id]).
 
 agm_event_id(event(Id, _), Id) :-
     !.

@@ -6,11 +6,14 @@
             oro_clear_events/1,         % +Model
             oro_clear_events/2,         % +Model, +Registry
             oro_clear_event/2,          % +Model, +Id
+            oro_clear_event/3,          % +Model, +Registry, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_subscriber_create/3,    % :Deliver, -Subscriber, +Options
             oro_subscriber_destroy/1,   % +Subscriber
+            oro_subscriber_destroy/2,   % +Subscriber, +Options
             oro_subscribe/7,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Id
-            oro_unsubscribe/1,          % +Id
+            oro_subscribe/8,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Subscription, +Options
+            oro_unsubscribe/1,          % +IdOrSubscription
             oro_events_sync/0
           ]).
 :- use_module(library(semweb/rdf_db)).
@@ -31,8 +34,9 @@
 :- use_module(oro_parse).
 
 :- meta_predicate
-    oro_subscriber_create(2, -, +),
-    oro_subscribe(+, +, +, +, +, 2, -).
+    oro_subscriber_create(2, -, :),
+    oro_subscribe(+, +, +, +, +, 2, -),
+    oro_subscribe(+, +, +, +, +, 2, -, :).
 
 /** <module> Events: watchers re-checked after every change
 
@@ -70,10 +74,22 @@ How changes reach watchers, exactly once and in order:
     a subscriber's queue is full it has fallen too far behind: it is
     dropped (its subscriptions are removed and its overflow goal, for a
     socket the closing of the connection, is run), so it never silently
-    misses an event and stays subscribed.
+    misses an event and stays subscribed.  Who destroys the subscriber
+    (stops its thread, frees its queue) depends on who owns it: one made
+    by oro_subscriber_create/3 belongs to its creator (a connection
+    destroys its own when it closes); one made by oro_subscribe/8 for a
+    planner belongs to this module, which destroys it on overflow (its
+    queued firings are then discarded) and on reset
+    (oro_events_reset/0), as well as on oro_unsubscribe/1.
 
 The watcher thread owns all watcher state; other threads only send it
-messages.
+messages.  Its own queue (changes and requests) is *unbounded*, so that
+writers never wait for it, and *each queued change holds an rdf_db
+snapshot* (rdf_snapshot/1) until it is processed: while the watcher
+thread is behind a burst of writes, rdf_db keeps every triple version
+those snapshots may see.  Memory then grows with the backlog (not with
+the number of watchers) and is given back as it is processed;
+oro_events_sync/0 waits for it.
 
 ## Incremental evaluation
 
@@ -117,15 +133,30 @@ rdfs:subPropertyOf or owl:sameAs, a type with neither end given, or
 whose subject and object are one variable (see pattern_kind/6), a
 removal under a transitive property or whose lost values cannot be
 narrowed, a true fact_checking watcher losing a triple it depends on,
-one not evaluated yet, and too many seeds (more than 2,000).  The
-setting `oro_events:incremental` (default `true`) set to `false` forces
-full evaluation of every affected watcher; the tests compare both on
-random changes.
+one not evaluated yet, and too many seeds (more than 2,000).
+
+## Settings
+
+  - `oro_events:incremental` (default `true`): `false` forces full
+    evaluation of every watcher the index selects.
+  - `oro_events:index` (default `true`): `false` is a reference mode
+    that ignores the index altogether: every change is sent to the
+    watcher thread, the schemas of the models it touches are compiled
+    again, and every watcher of those models is evaluated in full.
+    Slow; it exists to check the index.
+
+The tests compare the three on random changes over a schema with
+sub-properties, inverses, symmetric and transitive properties, domains
+and ranges.
 */
 
 :- setting(incremental, boolean, true,
            'Evaluate watchers from the changed triples where sound; \c
             false re-evaluates every affected watcher in full').
+:- setting(index, boolean, true,
+           'Select the watchers a change may affect by their dependencies; \c
+            false (a reference for tests) evaluates every watcher of the \c
+            changed models in full at every change').
 
 :- dynamic
     watcher/5,                      % Id, Model, Registry, Spec, Query
@@ -136,8 +167,9 @@ random changes.
     watcher_trigger/5,              % Key, Model, Predicate, Anchor, Id
     watcher_plan/2,                 % Id, Plan
     subscription/2,                 % Id, Subscriber
-    subscriber/3,                   % Subscriber, Queue, Thread
+    subscriber/4,                   % Subscriber, Queue, Thread, Owner
     callback_subscriber/2,          % Id, Subscriber
+    discarding/1,                   % Name of a subscriber being stopped
     pending_direct/3,               % Deliver, Id, Content
     model_schema/2,                 % Model, Key (the watcher thread's)
     touched/2,                      % Model, Predicate  (thread_local use)
@@ -184,11 +216,18 @@ oro_events_start :-
 
 %!  oro_events_reset is det.
 %
-%   Forget every watcher (reset): their ids become unknown.
-%   Subscribers stay, with no subscriptions.
+%   Forget every watcher (reset): their ids become unknown.  The
+%   subscribers of oro_subscribe/8 are destroyed: the firings they have
+%   queued are discarded and, when this returns, their threads have
+%   ended (it waits for a call of a callback in progress; a callback
+%   calling oro_reset/0 ends its own thread once it returns).
+%   Subscribers of oro_subscriber_create/3 stay, with no subscriptions:
+%   their creators own them.
 
 oro_events_reset :-
-    call_watcher(reset).
+    call_watcher(reset, stop(Stops)),
+    forall(member(stop(Name, Queue, Thread), Stops),
+           stop_delivery(Name, Queue, Thread, discard)).
 
 %!  oro_events_sync is det.
 %
@@ -199,6 +238,9 @@ oro_events_sync :-
     call_watcher(sync).
 
 call_watcher(Request) :-
+    call_watcher(Request, true).
+
+call_watcher(Request, Reply) :-
     oro_events_start,
     thread_self(Me),
     gensym(oro_reply_, Tag),
@@ -206,7 +248,7 @@ call_watcher(Request) :-
     thread_get_message(reply(Tag, Result)),
     (   Result = error(E)
     ->  throw(E)
-    ;   Result = true
+    ;   Result = Reply
     ).
 
 		 /*******************************
@@ -348,6 +390,7 @@ flush_changes :-
     ;   (   Schema == true
         ;   pending
         ;   relevant(Touched)
+        ;   \+ setting(index, true)           % the reference mode
         )
     ->  (   Schema == true
         ->  flag(oro_events_pending, N, N+1)
@@ -543,19 +586,40 @@ oro_clear_events(Model0, Registry) :-
 
 %!  oro_clear_event(+Model, +Id) is det.
 %
-%   Remove the watcher Id of Model.
+%   Remove the watcher Id of Model, whatever its registry: ORO's
+%   clearEvent(id).
 %   @error existence_error(event, Id) if there is none.
 %   @error domain_error(uuid, Id) if Id is not a UUID.
 
 oro_clear_event(Model0, Id0) :-
     oro_resolve_model(Model0, Model),
+    event_id(Id0, Id),
+    call_watcher(clear_one(Model, _, Id)).
+
+%!  oro_clear_event(+Model, +Registry, +Id) is det.
+%
+%   Remove the watcher Id of Model if it is in Registry: ORO's
+%   clearEvent(agent, id) is oro_clear_event(Agent, agent, Id), which
+%   only removes what registerEventForAgent registered on that agent's
+%   model, as clearEventsForAgent() does (ORO-SPEC §7.1 keeps the
+%   registries apart).
+%   @error existence_error(event, Id) if Model has no watcher Id in
+%          Registry (a watcher of another registry or model is left).
+%   @error domain_error(uuid, Id) if Id is not a UUID.
+
+oro_clear_event(Model0, Registry, Id0) :-
+    oro_resolve_model(Model0, Model),
+    must_be(oneof([plain, agent, internal]), Registry),
+    event_id(Id0, Id),
+    call_watcher(clear_one(Model, Registry, Id)).
+
+event_id(Id0, Id) :-
     must_be(text, Id0),
     atom_string(Id, Id0),
     (   catch(uuid_property(Id, version(_)), _, fail)
     ->  true
     ;   domain_error(uuid, Id0)
-    ),
-    call_watcher(clear_one(Model, Id)).
+    ).
 
 %!  oro_watchers(+Model, -Watchers) is det.
 %
@@ -588,10 +652,13 @@ oro_watchers(Model0, Watchers) :-
 %   Create a subscriber: a bounded queue and a thread calling
 %   call(Deliver, Id, Content) for each firing of the watchers it
 %   subscribes to, in order.  Content is [] for `fact_checking`
-%   watchers, else the list of new (or removed) values.  Options:
+%   watchers, else the list of new (or removed) values.  The
+%   subscriber belongs to the caller, who destroys it with
+%   oro_subscriber_destroy/1,2 (oro_events_reset/0 leaves it).
+%   Options:
 %
 %     - max_queue(+N): firings waiting at most (default 10000); past it
-%       the subscriber is dropped;
+%       the subscriber is dropped: it loses its subscriptions;
 %     - on_overflow(:Goal): called (in a thread of its own) when it is
 %       dropped;
 %     - registry(+Registry): `plain` (default) or `agent`, which
@@ -602,21 +669,37 @@ oro_watchers(Model0, Watchers) :-
 %       oro_events_sync/0).  For oro's own short, non-blocking
 %       reactions only, such as creating agent models.
 
-oro_subscriber_create(Deliver, Subscriber, Options) :-
-    must_be(list, Options),
+oro_subscriber_create(Deliver, Subscriber, QOptions) :-
+    strip_module(QOptions, _, Options0),
+    must_be(list, Options0),
+    meta_options(is_meta_option, QOptions, Options),
+    subscriber_create(Deliver, Subscriber, Options, caller).
+
+is_meta_option(on_overflow).
+
+%   subscriber_create(:Deliver, -Subscriber, +Options, +Owner): Owner
+%   is `caller` or `callback` (oro_subscribe/8: this module destroys it
+%   on overflow and reset).
+
+subscriber_create(Deliver, Subscriber, Options, Owner) :-
     option(max_queue(Max), Options, 10000),
+    must_be(positive_integer, Max),
     option(on_overflow(OnOverflow), Options, true),
+    must_be(callable, OnOverflow),
     option(registry(Registry), Options, plain),
+    must_be(oneof([plain, agent, internal]), Registry),
     option(in_watcher(InWatcher), Options, false),
+    must_be(boolean, InWatcher),
     gensym(oro_subscriber_, Name),
     Subscriber = subscriber(Name, Registry, OnOverflow),
     (   InWatcher == true
     ->  Queue = direct(Deliver),
         Thread = none
     ;   message_queue_create(Queue, [max_size(Max)]),
-        thread_create(deliver_loop(Queue, Deliver), Thread, [])
+        thread_create(deliver_thread(Queue, Name, Deliver), Thread, [])
     ),
-    with_mutex(oro_events, assertz(subscriber(Subscriber, Queue, Thread))).
+    with_mutex(oro_events,
+               assertz(subscriber(Subscriber, Queue, Thread, Owner))).
 
 subscriber_registry(subscriber(_, Registry, _), Registry) :-
     !.
@@ -624,63 +707,193 @@ subscriber_registry(Subscriber, _) :-
     type_error(oro_subscriber, Subscriber).
 
 %!  oro_subscriber_destroy(+Subscriber) is det.
+%!  oro_subscriber_destroy(+Subscriber, +Options) is det.
 %
 %   Unsubscribe Subscriber from every watcher (watchers left without
 %   subscribers are dropped), deliver what it has queued and stop its
-%   thread.
+%   thread; nothing if it is destroyed already.  Called from its own
+%   Deliver, what it has queued is discarded and its thread ends once
+%   Deliver returns.  Options:
+%
+%     - abort(+Bool): if `true`, what it has queued is discarded and a
+%       call of Deliver in progress is interrupted (by the exception
+%       `oro_delivery_aborted`, which the thread handles), also out of
+%       a blocked write: for a subscriber writing to a connection that
+%       is closing.  Never for a planner's callback.
+
+:- predicate_options(oro_subscriber_destroy/2, 2, [abort(boolean)]).
 
 oro_subscriber_destroy(Subscriber) :-
-    (   subscriber(Subscriber, direct(_), _)
+    oro_subscriber_destroy(Subscriber, []).
+
+oro_subscriber_destroy(Subscriber, Options) :-
+    must_be(compound, Subscriber),
+    must_be(list, Options),
+    option(abort(Abort), Options, false),
+    must_be(boolean, Abort),
+    (   claim_subscriber(Subscriber, Queue, Thread)
     ->  call_watcher(unsubscribe(Subscriber)),
-        with_mutex(oro_events, retractall(subscriber(Subscriber, _, _)))
-    ;   subscriber(Subscriber, Queue, Thread)
-    ->  call_watcher(unsubscribe(Subscriber)),
-        thread_send_message(Queue, '$stop'),
-        thread_self(Me),
-        (   Thread == Me
+        Subscriber = subscriber(Name, _, _),
+        (   Queue = direct(_)
         ->  true
-        ;   thread_join(Thread, _)
-        ),
-        with_mutex(oro_events, retractall(subscriber(Subscriber, _, _))),
-        message_queue_destroy(Queue)
+        ;   Abort == true
+        ->  stop_delivery(Name, Queue, Thread, abort)
+        ;   stop_delivery(Name, Queue, Thread, deliver)
+        )
     ;   true
     ).
 
-deliver_loop(Queue, Deliver) :-
+%   claim_subscriber(+Subscriber, -Queue, -Thread) is semidet: take
+%   Subscriber out of the table of live subscribers.  Who claims it
+%   (a destroy, a reset, an overflow) stops its thread; the watcher
+%   thread sends nothing more to it.
+
+claim_subscriber(Subscriber, Queue, Thread) :-
+    with_mutex(oro_events,
+               ( retract(subscriber(Subscriber, Queue, Thread, _)),
+                 retractall(callback_subscriber(_, Subscriber))
+               )).
+
+%   stop_delivery(+Name, +Queue, +Thread, +How): end the delivery
+%   thread of a claimed subscriber and free its queue.  How is
+%   `deliver` (what is queued first), `discard` (dropped; a call of
+%   Deliver in progress ends first) or `abort` (dropped, and a call in
+%   progress is interrupted).  A thread stopping itself only notes it
+%   is to end, detached, when its Deliver returns.
+
+stop_delivery(Name, Queue, Thread, How) :-
+    thread_self(Me),
+    (   Thread == Me
+    ->  mark_discarding(Name),
+        thread_detach(Me),
+        thread_at_exit(end_delivery(Name, Queue)),
+        ignore(thread_send_message(Queue, '$stop', [timeout(0)]))
+    ;   How == deliver
+    ->  thread_send_message(Queue, '$stop'),
+        thread_join(Thread, _),
+        end_delivery(Name, Queue)
+    ;   mark_discarding(Name),
+        % When the queue is full the thread gets a message anyway and
+        % sees it is discarding.
+        ignore(thread_send_message(Queue, '$stop', [timeout(0)])),
+        (   How == abort
+        ->  catch(thread_signal(Thread, throw(oro_delivery_aborted)), _, true)
+        ;   true
+        ),
+        thread_join(Thread, _),
+        end_delivery(Name, Queue)
+    ).
+
+mark_discarding(Name) :-
+    with_mutex(oro_events,
+               (   discarding(Name)
+               ->  true
+               ;   assertz(discarding(Name))
+               )).
+
+end_delivery(Name, Queue) :-
+    message_queue_destroy(Queue),
+    with_mutex(oro_events, retractall(discarding(Name))).
+
+deliver_thread(Queue, Name, Deliver) :-
+    catch(deliver_loop(Queue, Name, Deliver), oro_delivery_aborted, true).
+
+deliver_loop(Queue, Name, Deliver) :-
     thread_get_message(Queue, Message),
     (   Message == '$stop'
     ->  true
+    ;   discarding(Name)
+    ->  true
     ;   Message = event(Id, Content),
-        catch(call(Deliver, Id, Content), E,
-              print_message(warning, E)),
-        deliver_loop(Queue, Deliver)
+        catch(call(Deliver, Id, Content), E, delivery_error(E)),
+        deliver_loop(Queue, Name, Deliver)
     ).
+
+delivery_error(E) :-
+    (   (   E == oro_delivery_aborted
+        ;   E == '$aborted'
+        ;   E = unwind(_)
+        )
+    ->  throw(E)
+    ;   print_message(warning, E)
+    ).
+
+:- predicate_options(oro_subscribe/8, 8,
+                     [ max_queue(positive_integer),
+                       on_overflow(callable)
+                     ]).
 
 %!  oro_subscribe(+Model, +Type, +Trigger, +Var, +Patterns, :Callback,
 %!                -Id) is det.
 %
-%   Register a watcher (see oro_register_event/7) whose firings call
-%   call(Callback, Id, Content) in a thread of its own: the Prolog
-%   equivalent of registerEvent for a planner in the same process.
+%   As oro_subscribe/8 with no options, giving the watcher id; stop it
+%   with oro_unsubscribe(Id), which stops every callback on that
+%   watcher.
 
 oro_subscribe(Model, Type, Trigger, Var, Patterns, Callback, Id) :-
-    oro_subscriber_create(Callback, Subscriber, []),
+    oro_subscribe(Model, Type, Trigger, Var, Patterns, Callback,
+                  oro_subscription(Id, _), []).
+
+%!  oro_subscribe(+Model, +Type, +Trigger, +Var, +Patterns, :Callback,
+%!                -Subscription, +Options) is det.
+%
+%   Register a watcher (see oro_register_event/7) whose firings call
+%   call(Callback, Id, Content) in a thread of its own, in order: the
+%   Prolog equivalent of registerEvent for a planner in the same
+%   process.  Subscription is oro_subscription(Id, Ref): Id is the
+%   watcher id, which Callback receives and identical subscriptions
+%   share; the whole term is this subscription's own handle for
+%   oro_unsubscribe/1.  Options:
+%
+%     - max_queue(+N): firings waiting for Callback at most (default
+%       10000).  Past it the subscription is dropped: it is
+%       unsubscribed, its queued firings are discarded, its thread ends
+%       once a call of Callback in progress returns, and its
+%       on_overflow goal is told.
+%     - on_overflow(:Goal): called as call(Goal, Subscription), in a
+%       thread of its own, when the subscription is dropped; Callback
+%       is not called for any later firing.  A planner may subscribe
+%       anew from there.
+%
+%   oro_reset/0 destroys every subscription.
+
+oro_subscribe(Model, Type, Trigger, Var, Patterns, Callback, Subscription,
+              QOptions) :-
+    strip_module(QOptions, _, Options0),
+    must_be(list, Options0),
+    meta_options(is_meta_option, QOptions, Options1),
+    include(subscribe_option, Options1, Options),
+    subscriber_create(Callback, Subscriber, Options, callback),
     catch(oro_register_event(Model, Type, Trigger, Var, Patterns,
                              Subscriber, Id),
           E,
           ( oro_subscriber_destroy(Subscriber),
             throw(E)
           )),
-    with_mutex(oro_events, assertz(callback_subscriber(Id, Subscriber))).
+    Subscription = oro_subscription(Id, Subscriber).
 
-%!  oro_unsubscribe(+Id) is det.
+subscribe_option(max_queue(_)).
+subscribe_option(on_overflow(_)).
+
+%!  oro_unsubscribe(+IdOrSubscription) is det.
 %
-%   Stop the callbacks set by oro_subscribe/7 for watcher Id.
+%   Stop callbacks set by oro_subscribe/7,8: given a Subscription
+%   handle, that subscription only (others on the same watcher go on);
+%   given a watcher Id, every callback on that watcher, whoever set it.
+%   When this returns the callbacks stopped have received what was
+%   queued for them and are not running (unless called from one of
+%   them, which then ends once it returns).  Nothing if they are
+%   stopped already.
 
+oro_unsubscribe(Subscription) :-
+    compound(Subscription),
+    Subscription = oro_subscription(_, Subscriber),
+    !,
+    oro_subscriber_destroy(Subscriber).
 oro_unsubscribe(Id) :-
     must_be(atom, Id),
     with_mutex(oro_events,
-               findall(S, retract(callback_subscriber(Id, S)), Subscribers)),
+               findall(S, callback_subscriber(Id, S), Subscribers)),
     maplist(oro_subscriber_destroy, Subscribers).
 
 		 /*******************************
@@ -717,7 +930,9 @@ handle(call(Request, Thread, Tag)) :-
     ->  Result = Result0
     ;   Result = error(failed(Request))
     ),
-    thread_send_message(Thread, reply(Tag, Result)).
+    catch(thread_send_message(Thread, reply(Tag, Result)),
+          error(existence_error(thread, _), _),
+          true).                        % the caller is gone
 
 %   Deliveries to in_watcher subscribers run once the snapshot
 %   transaction is over, so they may change the store.
@@ -728,7 +943,7 @@ run_direct_deliveries :-
                  print_message(warning, E))).
 
 request(sync, true).
-request(reset, true) :-
+request(reset, stop(Stops)) :-
     retractall(watcher(_, _, _, _, _)),
     retractall(watcher_seq(_, _)),
     retractall(watcher_state(_, _)),
@@ -737,7 +952,13 @@ request(reset, true) :-
     retractall(watcher_trigger(_, _, _, _, _)),
     retractall(watcher_plan(_, _)),
     retractall(subscription(_, _)),
-    forall(retract(model_schema(_, Key)), oro_drop_schema(Key)).
+    forall(retract(model_schema(_, Key)), oro_drop_schema(Key)),
+    findall(S, subscriber(S, _, _, callback), Subscribers),
+    findall(stop(Name, Queue, Thread),
+            ( member(S, Subscribers),
+              S = subscriber(Name, _, _),
+              claim_subscriber(S, Queue, Thread)
+            ), Stops).
 request(register(Model, Registry, Spec, Query, Subscriber, Snapshot), id(Id)) :-
     call_cleanup(register(Model, Registry, Spec, Query, Subscriber,
                           Snapshot, Id),
@@ -746,22 +967,26 @@ request(register(Model, Registry, Spec, Query, Subscriber, Snapshot), id(Id)) :-
                  )).
 request(clear(Model, Registry), true) :-
     forall(watcher(Id, Model, Registry, _, _), drop_watcher(Id)).
-request(clear_one(Model, Id), true) :-
-    (   watcher(Id, Model, _, _, _)
+request(clear_one(Model, Registry, Id), true) :-
+    (   watcher(Id, Model, Registry, _, _)
     ->  drop_watcher(Id)
     ;   existence_error(event, Id)
     ).
 request(unsubscribe(Subscriber), true) :-
-    forall(retract(subscription(Id, Subscriber)),
-           drop_if_orphan(Id)).
+    unsubscribe(Subscriber).
 
+register(_, _, _, _, Subscriber, _, _) :-
+    \+ subscriber(Subscriber, _, _, _),
+    !,
+    existence_error(oro_subscriber, Subscriber).    % destroyed meanwhile
 register(Model, Registry, Spec, _, Subscriber, _, Id) :-
     watcher(Id, Model, Registry, Spec, _),
     !,
     (   subscription(Id, Subscriber)
     ->  true
     ;   assertz(subscription(Id, Subscriber))
-    ).
+    ),
+    note_callback(Id, Subscriber).
 register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
     uuid(Id, [version(4)]),
     rdf_transaction(ensure_schemas([Model]), oro(events), [snapshot(Snapshot)]),
@@ -776,7 +1001,19 @@ register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
     forall(member(V, Values), assertz(watcher_value(V, Id))),
     set_index(Id, Model, Index),
     assertz(subscription(Id, Subscriber)),
+    note_callback(Id, Subscriber),
     debug(oro(events), 'Watcher ~w: ~q', [Id, Spec]).
+
+%   note_callback(+Id, +Subscriber): a subscriber of oro_subscribe/8 is
+%   noted with its watcher here, in the watcher thread, so that an
+%   overflow right after the registration finds it.
+
+note_callback(Id, Subscriber) :-
+    (   subscriber(Subscriber, _, _, callback),
+        \+ callback_subscriber(Id, Subscriber)
+    ->  with_mutex(oro_events, assertz(callback_subscriber(Id, Subscriber)))
+    ;   true
+    ).
 
 %   The initial state: fact_checking watchers start `unknown` (false)
 %   and are not evaluated (ORO-SPEC §7.3); the others remember their
@@ -989,7 +1226,10 @@ trigger_key(Model, Q, Anchor, Key) :-
 		 *******************************/
 
 process_change(Snapshot, Touched, Schema, Delta) :-
-    (   Schema == true
+    setting(index, Index),
+    (   (   Schema == true
+        ;   Index == false                  % the reference mode
+        )
     ->  forget_schemas(Touched)
     ;   true
     ),
@@ -998,7 +1238,7 @@ process_change(Snapshot, Touched, Schema, Delta) :-
     ->  true
     ;   setting(incremental, Incremental),
         rdf_transaction(change_in_snapshot(Models, Touched, Schema, Delta,
-                                           Incremental),
+                                           Incremental-Index),
                         oro(events), [snapshot(Snapshot)])
     ).
 
@@ -1024,12 +1264,11 @@ affected_models(Touched, Models) :-
     ),
     sort(Models0, Models).
 
-change_in_snapshot(Models, Touched, Schema, Delta, Incremental) :-
+change_in_snapshot(Models, Touched, Schema, Delta, How) :-
     ensure_schemas(Models),
     with_schemas(Models,
                  forall(member(Model, Models),
-                        evaluate_model(Model, Touched, Schema, Delta,
-                                       Incremental))).
+                        evaluate_model(Model, Touched, Schema, Delta, How))).
 
 ensure_schemas(Models) :-
     forall(( member(M, Models),
@@ -1039,13 +1278,17 @@ ensure_schemas(Models) :-
              assertz(model_schema(M, Key))
            )).
 
-%   evaluate_model(+Model, +Touched, +Schema, +Delta, +Incremental):
-%   evaluate the watchers of Model the change may affect, in
-%   registration order.  Mode is `full` or delta(Added, Removed), the
-%   triples of the change in Model.
+%   evaluate_model(+Model, +Touched, +Schema, +Delta,
+%                  +Incremental-Index): evaluate the watchers of Model
+%   the change may affect, in registration order: all of them after a
+%   schema change, or in the reference mode (Index `false`).  Mode is
+%   `full` or delta(Added, Removed, Same), the triples of the change in
+%   Model.
 
-evaluate_model(Model, Touched, Schema, Delta, Incremental) :-
-    (   Schema == true
+evaluate_model(Model, Touched, Schema, Delta, Incremental-Index) :-
+    (   (   Schema == true
+        ;   Index == false
+        )
     ->  findall(Id, watcher(Id, Model, _, _, _), Ids0),
         Mode = full
     ;   Incremental == true,
@@ -1139,6 +1382,8 @@ evaluate_watcher(Id, Mode, Schema) :-
     forall(member(Content, Contents), fire(Id, Content)),
     (   Remove == true
     ->  drop_watcher(Id)
+    ;   \+ watcher(Id, _, _, _, _)
+    ->  true                                % its subscribers were dropped
     ;   (   Schema == true
         ;   State0 == unknown
         )
@@ -1490,17 +1735,59 @@ fire(Id, Content) :-
            send_firing(Subscriber, Id, Content)).
 
 send_firing(Subscriber, Id, Content) :-
-    (   subscriber(Subscriber, direct(Deliver), _)
-    ->  assertz(pending_direct(Deliver, Id, Content))  % run after the snapshot
-    ;   subscriber(Subscriber, Queue, _),
-        thread_send_message(Queue, event(Id, Content), [timeout(0)])
-    ->  true
-    ;   overflow(Subscriber)
+    (   subscriber(Subscriber, Queue, _, _)
+    ->  (   Queue = direct(Deliver)
+        ->  assertz(pending_direct(Deliver, Id, Content))  % run after the snapshot
+        ;   thread_send_message(Queue, event(Id, Content), [timeout(0)])
+        ->  true
+        ;   overflow(Subscriber)
+        )
+    ;   unsubscribe(Subscriber)                 % being destroyed
     ).
+
+unsubscribe(Subscriber) :-
+    forall(retract(subscription(Id, Subscriber)),
+           drop_if_orphan(Id)).
+
+%   overflow(+Subscriber): Subscriber's queue is full.  It loses its
+%   subscriptions and its on_overflow goal runs in a thread of its own
+%   (for a subscriber of a connection, ending the connection).  A
+%   subscriber of oro_subscribe/8 is destroyed too: its queued firings
+%   are discarded, and its on_overflow goal is told which subscription
+%   was dropped.
 
 overflow(Subscriber) :-
     print_message(warning, format("oro: event subscriber ~w fell behind: \c
                                    dropped", [Subscriber])),
-    forall(retract(subscription(Id, Subscriber)), drop_if_orphan(Id)),
-    Subscriber = subscriber(_, _, OnOverflow),
-    thread_create(ignore(catch(OnOverflow, _, true)), _, [detached(true)]).
+    unsubscribe(Subscriber),
+    Subscriber = subscriber(Name, _, OnOverflow),
+    (   subscriber(Subscriber, _, _, callback)
+    ->  with_mutex(oro_events,
+                   findall(I, callback_subscriber(I, Subscriber), Ids)),
+        (   claim_subscriber(Subscriber, Queue, Thread)
+        ->  mark_discarding(Name),
+            (   Ids = [Id|_]
+            ->  Subscription = oro_subscription(Id, Subscriber)
+            ;   Subscription = none
+            ),
+            thread_create(callback_overflow(OnOverflow, Subscription,
+                                            Name, Queue, Thread),
+                          _, [detached(true)])
+        ;   true                            % claimed by a destroy meanwhile
+        )
+    ;   thread_create(run_overflow_goal(OnOverflow), _, [detached(true)])
+    ).
+
+run_overflow_goal(Goal) :-
+    catch(Goal, E, print_message(warning, E)),
+    !.
+run_overflow_goal(_).
+
+callback_overflow(OnOverflow, Subscription, Name, Queue, Thread) :-
+    (   strip_module(OnOverflow, _, true)
+    ->  true
+    ;   Subscription == none
+    ->  true
+    ;   run_overflow_goal(call(OnOverflow, Subscription))
+    ),
+    stop_delivery(Name, Queue, Thread, discard).
