@@ -38,7 +38,13 @@ alike:
     `bool(B)`, `string(S)`, `list(L)`, `map(Pairs)`, `raw(Text)`).
     An Implementation context(Goal) is called as
     call(Goal, Context, Arg1, ..., ArgN, Reply), Context being the
-    dict describing the connection.
+    dict describing the connection.  An Implementation
+    transaction(Impl), Impl being one of the above, is called as one
+    change of the store (oro_store_write/2, action method(Name)): the
+    changes it makes, with any number of oro_add/2, oro_remove/2...
+    calls, are committed together when it succeeds, and none is kept
+    if it fails or raises.  The plugins' methods are called so (see
+    oro_plugins).
 
 The dispatcher finds the method by name (case-insensitively) and
 arity, decodes the parameters, calls it, and turns any error into an
@@ -85,7 +91,7 @@ dispatch(Context, Method, Params, Value) :-
     !,
     Skeleton =.. [_|Types],
     decode_params(Types, Params, Method, Args),
-    call_method(Impl, Context, Args, Value).
+    call_method(Impl, Exact, Context, Args, Value).
 dispatch(Context, Method, Params, Value) :-
     string_lower(Method, Lower),
     atom_string(Name, Lower),
@@ -94,9 +100,9 @@ dispatch(Context, Method, Params, Value) :-
     (   Candidates == []
     ->  throw(error(oro_method(unknown, Method), _))
     ;   include(has_arity(Arity), Candidates, [Sig-Impl|_])
-    ->  Sig =.. [_|Types],
+    ->  Sig =.. [Declared|Types],
         decode_params(Types, Params, Method, Args),
-        call_method(Impl, Context, Args, Value)
+        call_method(Impl, Declared, Context, Args, Value)
     ;   throw(error(oro_method(arity(Arity), Method), _))
     ).
 
@@ -126,11 +132,21 @@ decode_param(set, Text, Value) :-
 decode_param(list, Text, Value) :-
     oro_parse_collection(list, Text, Value).
 
-call_method(context(Goal), Context, Args, Value) :-
+%   call_method(+Impl, +Name, +Context, +Args, -Value): call the
+%   implementation of the method Name.  A transaction(Impl) runs as one
+%   store write: rdf_db transactions nest, so the changes Impl makes
+%   join it and the store's monitors (journal, watchers) see one change
+%   when it commits; a failure or exception rolls them all back.
+
+call_method(transaction(Impl), Name, Context, Args, Value) :-
+    !,
+    oro_store_write(method(Name),
+                    call_method(Impl, Name, Context, Args, Value)).
+call_method(context(Goal), _, Context, Args, Value) :-
     !,
     Call =.. [call, Goal, Context|Args],
     append_reply(Call, Value).
-call_method(Goal, _, Args, Value) :-
+call_method(Goal, _, _, Args, Value) :-
     Call =.. [call, Goal|Args],
     append_reply(Call, Value).
 
@@ -541,7 +557,7 @@ method(findForAgent(string, string, set, set), agents,
 method(find(set, set, set, set), querying,
        "KB-API find: one variable, patterns, SPARQL filters (or null) and one agent (or null for myself).",
        m_find_kb).
-method(getInfosForAgent(string, string), agent,
+method(getInfosForAgent(string, string), agents,
        "Returns the statements about a resource in an agent's model.",
        m_get_infos_for_agent).
 method(lookupForAgent(string, string), agents,
@@ -691,7 +707,7 @@ method(clearEventsForAgent(string), events,
        "Removes every event registered with registerEventForAgent on this agent.",
        m_clear_events_for_agent).
 method(clearEvent(string, string), events,
-       "Removes the event with this id from this agent's model.",
+       "Removes the event with this id registered with registerEventForAgent on this agent (an id from registerEvent or from another agent is not found there).",
        m_clear_event_for_agent).
 
 m_register_event(Context, Type, Trigger, Patterns, raw(Id)) :-
@@ -721,22 +737,30 @@ m_clear_events_for_agent(Agent, void) :-
     agent_model(Agent, Model),
     oro_clear_events(Model, agent).
 
+%   clearEvent(agent, id) addresses the registry of
+%   registerEventForAgent on the agent's model only, as
+%   clearEventsForAgent does: the id of a plain registerEvent watcher
+%   (or of another agent's) is EventNotFoundException, and that watcher
+%   stays (ORO-SPEC §7.1 keeps the registries apart).
+
 m_clear_event_for_agent(Agent, Id, void) :-
     agent_model(Agent, Model),
-    oro_clear_event(Model, Id).
+    oro_clear_event(Model, agent, Id).
 
 agent_model(Agent, Model) :-
     atom_string(Name, Agent),
     oro_resolve_model(Name, Model).
 
 %   The subscriber of a connection, made on first use: one for all its
-%   watchers, so its events keep their commit order; they are written
-%   on the connection under the connection's mutex.  The connection is
-%   ended (its thread gets oro_connection_end(Why)) when the subscriber
-%   falls too far behind, or when an event cannot be written (the
-%   client left, or did not read for write_timeout seconds): then the
-%   events still queued are dropped at once instead of each waiting
-%   for the same timeout.
+%   watchers (in every registry), so its events keep their commit
+%   order; they are written on the connection under the connection's
+%   mutex.  The connection is ended (its thread gets
+%   oro_connection_end(Why)) when the subscriber falls too far behind
+%   (more than the setting oro_server:event_queue events waiting to be
+%   written), or when an event cannot be written (the client left, or
+%   did not read for write_timeout seconds): then the events still
+%   queued are dropped at once instead of each waiting for the same
+%   timeout.
 
 connection_subscriber(Context, Subscriber) :-
     Slot = Context.subscribers,
@@ -744,8 +768,10 @@ connection_subscriber(Context, Subscriber) :-
     (   Subscribers = [Subscriber0]
     ->  Subscriber = Subscriber0
     ;   Sink = sink(Context.out, Context.mutex, Context.thread, open),
+        setting(oro_server:event_queue, MaxQueue),
         oro_subscriber_create(deliver_event(Sink), Subscriber,
-                              [ on_overflow(end_connection(Sink, events_overflow))
+                              [ max_queue(MaxQueue),
+                                on_overflow(end_connection(Sink, events_overflow))
                               ]),
         nb_setarg(1, Slot, [Subscriber])
     ).
@@ -775,17 +801,23 @@ event_content(Values, list(Texts)) :-
 %!  oro_connection_closed(+Context) is det.
 %
 %   Release what a connection holds: its event subscribers (and the
-%   watchers only they subscribed to).
+%   watchers only they subscribed to).  Events still queued for the
+%   connection are dropped, and a write of an event in progress is
+%   interrupted: after an overflow it may be blocked on a client that
+%   does not read, for up to write_timeout.  What such a write left in
+%   the output buffer is not waited for either: the output's timeout is
+%   lowered for the final close (every reply was flushed when written).
 
 oro_connection_closed(Context) :-
     catch(release_subscribers(Context),
           oro_connection_end(_),            % a late signal of its subscriber
-          oro_connection_closed(Context)).
+          oro_connection_closed(Context)),
+    catch(set_stream(Context.out, timeout(0.1)), _, true).
 
 release_subscribers(Context) :-
     arg(1, Context.subscribers, Subscribers),
     forall(member(Subscriber, Subscribers),
-           catch(oro_subscriber_destroy(Subscriber), E,
+           catch(oro_subscriber_destroy(Subscriber, [abort(true)]), E,
                  ( E = oro_connection_end(_)
                  ->  throw(E)
                  ;   print_message(warning, E)

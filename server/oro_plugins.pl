@@ -53,11 +53,48 @@ ORO errors exactly like the built-in ones.
     `float(X)`, `string(S)`, `list(Values)`, `map(Key-Value pairs)`,
     `raw(Text)`.  context(Goal) gets the connection's context dict
     first: call(Goal, Context, Arg1, ..., ArgN, Reply).
+    read_only(Implementation) declares a method that changes nothing
+    in the store (see Transactions below).
   - Errors are reported to the client as ORO errors: throw the
     ISO-shaped errors of oro's library (existence_error(class, IRI)
     becomes a NotFoundException...); any other exception, or a
-    failure, becomes an OntologyServerException.  Changes made with
-    one oro_add/2 (oro_remove/2, ...) call are one transaction.
+    failure, becomes an OntologyServerException.
+
+## Transactions
+
+A plugin method is one change of the store, as atomic as a built-in
+add: the loader declares its Implementation as
+transaction(Implementation) (see oro_methods), so it runs under the
+store's write lock in one rdf_db transaction (oro_store_write/2, action
+method(Name)).  rdf_db transactions nest: every oro_add/2,
+oro_remove/2, oro_update/2... the method makes joins that transaction.
+So when the method succeeds its changes are committed together and the
+event watchers see one change (one event for two oro_add/2 calls);
+when it fails or raises, none of them is kept.
+
+The price is the write lock, held for the whole call: other writers
+wait for it (readers do not).  A method that changes nothing in the
+store should say so:
+
+    oro_methods:method(countInstancesOf(string), taxonomy,
+                       "Returns the number of instances of a class.",
+                       read_only(count_instances_of)).
+
+read_only(Goal) or read_only(context(Goal)) is called as is, like a
+built-in reading method: no lock, no transaction (an oro_add/2 it makes
+anyway is its own transaction).  It is *required* for a method that
+registers or removes watchers or waits for them (oro_subscribe/7,
+oro_register_event/7, oro_unsubscribe/1, oro_clear_events/1,
+oro_events_sync/0, oro_reset/0): those take an rdf_db snapshot that
+other threads use, or wait for the watcher thread, which may itself
+wait for the write lock (it creates agent models); neither may happen
+inside a write transaction.  Listing watchers (oro_watchers/2) is fine
+either way.
+
+The write lock is taken even by a method that turns out to change
+nothing: whether it will change something is only known once it runs,
+and the lock must be held from its first read that a change depends
+on.
 
 ## What loading checks
 
@@ -212,8 +249,12 @@ print_issue(Issue) :-
 %   check_implementation(+Path, +Signature, +Implementation): warn if
 %   the predicate Implementation calls is not defined.
 
-check_implementation(Path, Sig, Impl) :-
+check_implementation(Path, Sig, Impl0) :-
     functor(Sig, _, Arity),
+    (   Impl0 = transaction(Impl)
+    ->  true
+    ;   Impl = Impl0
+    ),
     (   Impl = context(Goal)
     ->  Extra is Arity + 2
     ;   Goal = Impl,
@@ -354,16 +395,41 @@ text(Text) :-
     ;   atom(Text)
     ).
 
-implementation(context(Goal)) :-
+%   An Implementation is Core, transaction(Core) or read_only(Core),
+%   Core being Goal or context(Goal).
+
+implementation(read_only(Core)) :-
+    !,
+    core_implementation(Core).
+implementation(transaction(Core)) :-
+    !,
+    core_implementation(Core).
+implementation(Core) :-
+    core_implementation(Core).
+
+core_implementation(context(Goal)) :-
     !,
     callable(Goal).
-implementation(Goal) :-
+core_implementation(Goal) :-
     callable(Goal).
 
-qualify(context(Goal), Module, context(Qualified)) :-
+%   qualify(+Impl0, +Module, -Impl): the Implementation the method
+%   table gets: its goal qualified with Module, and called in a store
+%   transaction unless declared read_only(Core).
+
+qualify(read_only(Core0), Module, Core) :-
+    !,
+    qualify_core(Core0, Module, Core).
+qualify(transaction(Core0), Module, transaction(Core)) :-
+    !,
+    qualify_core(Core0, Module, Core).
+qualify(Core0, Module, transaction(Core)) :-
+    qualify_core(Core0, Module, Core).
+
+qualify_core(context(Goal), Module, context(Qualified)) :-
     !,
     qualify_goal(Goal, Module, Qualified).
-qualify(Goal, Module, Qualified) :-
+qualify_core(Goal, Module, Qualified) :-
     qualify_goal(Goal, Module, Qualified).
 
 qualify_goal(Goal, _, Goal) :-

@@ -64,6 +64,9 @@ nothing.
 :- setting(write_timeout, number, 60,
            'Seconds a reply may wait for a client that does not read, before \c
            the client is disconnected').
+:- setting(event_queue, positive_integer, 10000,
+           'Events a connection may have waiting to be written; a client \c
+           further behind is disconnected (its watchers are released)').
 
 opt_type(port, port, nonneg).
 opt_type(host, host, atom).
@@ -71,8 +74,8 @@ opt_type(ontology, ontology, file(read)).
 opt_type(commonsense, commonsense, boolean).
 opt_type(robot_id, robot_id, atom).
 opt_type(time_base, time_base, nonneg).
-opt_type(save_dir, save_dir, directory).
-opt_type(plugin, plugin, file(read)).
+opt_type(save_dir, save_dir, file(exist)).
+opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
@@ -136,6 +139,12 @@ main :-
 
 %   SIGTERM and SIGINT are handled by the main thread, which waits for
 %   this message: the shutdown itself runs outside the signal handler.
+%
+%   With SWI-Prolog 9.0.4, a SIGTERM that the kernel hands to another
+%   thread than main (it can, when main blocks signals for a moment)
+%   runs no handler: it is lost.  Reproduced in a ten-line script with
+%   two idle threads, once in a few dozen starts on a loaded machine.
+%   SIGINT is blocked in every thread but main, so it always works.
 
 shutdown_signal(_Signal) :-
     thread_send_message(main, oro_server_stop).
@@ -243,6 +252,8 @@ lock_connection(Grace, Mutex) :-
 lock_connection(Max, N, Mutex) :-
     (   catch(mutex_trylock(Mutex), _, fail)
     ->  true
+    ;   \+ connection(Mutex)              % it ended meanwhile
+    ->  true
     ;   N < Max
     ->  sleep(0.05),
         N1 is N + 1,
@@ -281,10 +292,16 @@ start_connection(Server, Client, Peer) :-
                                 serve_connection(Server, Client, Peer),
                                 _, [detached(true), wait(false)]),
           Error,
-          refuse_connection(Client, Error)).
+          refuse_connection(Client, Peer, Error)).
 
-refuse_connection(Client, Error) :-
-    print_message(warning, Error),
+refuse_connection(Client, Peer, Error) :-
+    (   Error = error(resource_error(threads_in_pool(_)), _)
+    ->  setting(max_connections, Max),
+        print_message(warning,
+                      format("oro: connection from ~p refused: ~D connections \c
+                              open already (max_connections)", [Peer, Max]))
+    ;   print_message(warning, Error)
+    ),
     catch(setup_call_cleanup(
               tcp_open_socket(Client, Pair),
               ( stream_pair(Pair, _, Out),

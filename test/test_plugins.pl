@@ -6,14 +6,20 @@
 :- use_module(library(aggregate)).
 :- use_module(library(error)).
 :- use_module(library(process)).
+:- use_module(library(filesex)).
+:- use_module(library(readutil)).
 :- use_module('../server/oro_plugins').
+:- use_module('../prolog/oro/oro_persist', [oro_persist_directory/1]).
+:- use_module(library(oro), [oro_close/0]).
 
 /*  Tests of plugins (server/oro_plugins.pl), over real sockets on
     127.0.0.1: loading with plugin(File) options of oro_server_start/2,
     listing in listMethods, listSimpleMethods, methods and help,
-    calling (parameters, context, transactions), run-time errors,
-    clashes with built-in methods, files that cannot be loaded, and the
-    real command line with --plugin.
+    calling (parameters, context, transactions), a method as one store
+    transaction (all its changes or none, one event, one commit), the
+    events API used in-process, run-time errors, clashes with built-in
+    methods, files that cannot be loaded, and the real command line
+    with --plugin (a missing file, two plugins).
 
     The method table is process-wide: every unit unloads its plugins in
     its cleanup (oro_unload_plugins/0), so no plugin leaks into the
@@ -24,7 +30,7 @@
 */
 
 :- dynamic
-    plg_capturing/1,                    % Thread
+    capturing_messages/1,                    % Thread
     plg_message/2.                      % Kind, Message
 
 
@@ -32,7 +38,7 @@
                  *     SERVER AND MESSAGES      *
                  *******************************/
 
-%   While plg_capturing(Thread) holds, the messages printed by Thread
+%   While capturing_messages(Thread) holds, the messages printed by Thread
 %   (the plugin loader's and the loader's own) are kept, not printed:
 %   oro_plugin(Message) ones in plg_message/2.
 
@@ -41,7 +47,7 @@
 
 user:message_hook(Term, Kind, _) :-
     thread_self(Me),
-    plg_capturing(Me),
+    capturing_messages(Me),
     memberchk(Kind, [error, warning, informational]),
     (   Term = oro_plugin(Message)
     ->  assertz(plg_message(Kind, Message))
@@ -53,19 +59,26 @@ user:message_hook(Term, Kind, _) :-
 %   relative to the checkout), recording the messages.
 
 plg_start(Plugins) :-
+    plg_start(Plugins, []).
+
+%   plg_start(+Plugins, +Options): the same, with more options of
+%   oro_server_start/2.
+
+plg_start(Plugins, Options) :-
     plg_stop,
     retractall(plg_message(_, _)),
     test_fixture('testsuite.ttl', Ontology),
     maplist(plg_plugin_path, Plugins, Files),
-    findall(plugin(F), member(F, Files), Options),
+    findall(plugin(F), member(F, Files), PluginOptions),
+    append(PluginOptions, Options, AllOptions),
     thread_self(Me),
     setup_call_cleanup(
-        assertz(plg_capturing(Me)),
+        assertz(capturing_messages(Me)),
         test_server_start([ commonsense(false),
                             ontology(Ontology)
-                          | Options
+                          | AllOptions
                           ]),
-        retractall(plg_capturing(Me))).
+        retractall(capturing_messages(Me))).
 
 plg_stop :-
     test_server_stop,
@@ -85,9 +98,9 @@ plg_load_captured(File) :-
     retractall(plg_message(_, _)),
     thread_self(Me),
     setup_call_cleanup(
-        assertz(plg_capturing(Me)),
+        assertz(capturing_messages(Me)),
         oro_load_plugin(File),
-        retractall(plg_capturing(Me))).
+        retractall(capturing_messages(Me))).
 
 %   plg_messages(-Messages): the oro_plugin messages of the last
 %   start, as Kind-Functor pairs.
@@ -270,6 +283,181 @@ test(transaction_applies_none, [ setup(plg_ok(reset, [], _)),
     plg_ok(check, ["[plgA rdf:type Monkey]"], Check).
 
 :- end_tests(plg_calling).
+
+
+                 /*******************************
+                 *         TRANSACTIONS         *
+                 *******************************/
+
+%   The methods of transaction_plugin change the robot's model with two
+%   separate oro_add/2 calls each; a plugin method is one store write,
+%   so a request keeps both statements or neither.
+
+plg_holds(Statement, Holds) :-
+    format(string(Set), "[~w]", [Statement]),
+    plg_ok(check, [Set], Holds).
+
+%   plg_events_of(+Requests, -Contents): on a listener connection, a
+%   NEW_INSTANCE watcher on ?plg_m rdf:type Monkey; run the
+%   Method-Params Requests on another connection, then add a marker
+%   monkey; Contents are the contents (sorted names) of the events
+%   received up to the marker's.
+
+plg_events_of(Requests, Contents) :-
+    test_server_port(Port),
+    setup_call_cleanup(
+        oro_connect(Port, Listener),
+        ( oro_call(Listener, registerEvent,
+                   ["NEW_INSTANCE", "ON_TRUE", "plg_m",
+                    "[?plg_m rdf:type Monkey]"],
+                   Registered),
+          test_expect_ok(registerEvent, Registered, _),
+          test_calls(Requests, _),
+          plg_ok(add, ["[plgMarker rdf:type Monkey]"], _),
+          plg_events_until(Listener, "plgMarker", Contents)
+        ),
+        oro_disconnect(Listener)).
+
+plg_events_until(Listener, Marker, Contents) :-
+    oro_next_event(Listener, Event, 10),
+    (   Event = event(_, Line)
+    ->  test_json(Line, Names0),
+        msort(Names0, Names),
+        (   Names == [Marker]
+        ->  Contents = []
+        ;   Contents = [Names|Rest],
+            plg_events_until(Listener, Marker, Rest)
+        )
+    ;   Contents = [Event]
+    ).
+
+:- begin_tests(plg_transactions,
+               [ setup(plg_start([transaction_plugin])),
+                 cleanup(plg_stop)
+               ]).
+
+test(committed_together, [ setup(plg_ok(reset, [], _)),
+                           true(Holds == ["true", "true"])
+                         ]) :-
+    plg_ok(plgAddTwice, ["plgA isOn plgB", "plgC isOn plgD"], _),
+    maplist(plg_holds, ["plgA isOn plgB", "plgC isOn plgD"], Holds).
+test(exception_keeps_nothing, [ setup(plg_ok(reset, [], _)),
+                                true(Name-Holds ==
+                                     "laas.openrobots.ontology.exceptions.OntologyServerException"-
+                                     ["false", "false"])
+                              ]) :-
+    test_call(plgAddTwiceThrow, ["plgA isOn plgB", "plgC isOn plgD"], Reply),
+    test_error_name(Reply, Name),
+    maplist(plg_holds, ["plgA isOn plgB", "plgC isOn plgD"], Holds).
+test(failure_keeps_nothing, [ setup(plg_ok(reset, [], _)),
+                              true(Name-Holds ==
+                                   "laas.openrobots.ontology.exceptions.OntologyServerException"-
+                                   ["false", "false"])
+                            ]) :-
+    test_call(plgAddTwiceFail, ["plgA isOn plgB", "plgC isOn plgD"], Reply),
+    test_error_name(Reply, Name),
+    maplist(plg_holds, ["plgA isOn plgB", "plgC isOn plgD"], Holds).
+test(one_event_per_request, [ setup(plg_ok(reset, [], _)),
+                              cleanup(plg_ok(reset, [], _)),
+                              true(Contents == [["plgM1", "plgM2"]])
+                            ]) :-
+    plg_events_of([ plgAddTwice-["plgM1 rdf:type Monkey",
+                                 "plgM2 rdf:type Monkey"],
+                    plgAddTwiceThrow-["plgM3 rdf:type Monkey",
+                                      "plgM4 rdf:type Monkey"]
+                  ],
+                  Contents).
+test(in_transaction, true(Replies == [ok("true"), ok("false")])) :-
+    test_calls([plgInTransaction-[], plgReadOnly-[]], Replies).
+test(method_table, true(Impls == [ transaction(plg_transaction_plugin:add_twice),
+                                   plg_transaction_plugin:in_transaction
+                                 ])) :-
+    oro_methods:method(plgAddTwice(_, _), _, _, I1),
+    oro_methods:method(plgReadOnly, _, _, I2),
+    Impls = [I1, I2].
+
+:- end_tests(plg_transactions).
+
+%   With a database directory, a plugin request is one change of the
+%   commit log: one commit line, numbered after the last one, and none
+%   for a request that raises.
+
+plg_db_start :-
+    tmp_file(plg_db, Dir),
+    plg_start([transaction_plugin], [db(Dir)]).
+
+plg_db_stop :-
+    (   oro_persist_directory(Dir)
+    ->  plg_stop,
+        oro_close,
+        delete_directory_and_contents(Dir)
+    ;   plg_stop
+    ).
+
+%   plg_commits(-Commits): the numbers of the commit lines of the
+%   commit log, in order.
+
+plg_commits(Commits) :-
+    oro_persist_directory(Dir),
+    directory_file_path(Dir, 'oro.jnl', File),
+    read_file_to_terms(File, Terms, []),
+    findall(N, member(commit(N), Terms), Commits).
+
+:- begin_tests(plg_durability,
+               [ setup(plg_db_start),
+                 cleanup(plg_db_stop)
+               ]).
+
+test(one_commit_per_request, [true(New == [Next, Next1])]) :-
+    plg_commits(Before),
+    last(Before, Last),
+    Next is Last + 1,
+    Next1 is Next + 1,
+    plg_ok(plgAddTwice, ["plgA isOn plgB", "plgC isOn plgD"], _),
+    test_call(plgAddTwiceThrow, ["plgE isOn plgF", "plgG isOn plgH"], _),
+    plg_ok(add, ["[plgI isOn plgJ]"], _),
+    plg_commits(After),
+    append(Before, New, After).
+
+:- end_tests(plg_durability).
+
+
+                 /*******************************
+                 *        EVENTS IN PROCESS     *
+                 *******************************/
+
+%   events_plugin registers a watcher with oro_subscribe/7 (its
+%   callback keeps the values), lists watchers with oro_watchers/2 and
+%   removes its callback with oro_unsubscribe/1.
+
+plg_fired(Id, Names) :-
+    plg_ok(plgFired, [Id], Line),
+    test_json(Line, Names).
+
+plg_watchers(Ids) :-
+    plg_ok(plgWatchers, [], Line),
+    test_json(Line, Ids).
+
+:- begin_tests(plg_events,
+               [ setup(plg_start([events_plugin])),
+                 cleanup(plg_stop)
+               ]).
+
+test(subscribe_and_fire, [ setup(plg_ok(reset, [], _)),
+                           cleanup(plg_ok(reset, [], _)),
+                           true(Listed-Fired-Unlisted == true-true-true)
+                         ]) :-
+    plg_ok(plgWatch, ["Monkey"], IdLine),
+    test_json(IdLine, Id),
+    plg_watchers(Ids),
+    test_bool(memberchk(Id, Ids), Listed),
+    plg_ok(add, ["[plgKing rdf:type Monkey]"], _),
+    test_bool(test_wait_until(plg_fired(Id, ["plgKing"]), 10), Fired),
+    plg_ok(plgUnwatch, [Id], _),
+    plg_watchers(Left),
+    test_bool(\+ memberchk(Id, Left), Unlisted).
+
+:- end_tests(plg_events).
 
 
                  /*******************************
@@ -475,6 +663,18 @@ plg_cli_call(Port, Method, Params, Reply) :-
         oro_call(Conn, Method, Params, Reply),
         oro_disconnect(Conn)).
 
+%   plg_cli_calls(+Port, +Requests, -Replies): the Method-Params
+%   Requests on one connection.
+
+plg_cli_calls(Port, Requests, Replies) :-
+    setup_call_cleanup(
+        oro_connect(Port, Conn),
+        maplist(plg_cli_request(Conn), Requests, Replies),
+        oro_disconnect(Conn)).
+
+plg_cli_request(Conn, Method-Params, Reply) :-
+    oro_call(Conn, Method, Params, Reply).
+
 plg_cli_args(Plugins, Args) :-
     test_fixture('testsuite.ttl', Ontology),
     atom_concat('--ontology=', Ontology, OntologyArg),
@@ -501,6 +701,39 @@ test(bad_plugin_server_starts, true(Reply-Reported == ok("\"oro-server 0.8.2\"")
     ->  Reported = true
     ;   Reported = false
     ).
+test(missing_plugin_server_starts,
+     true(Reply-Reported == ok("\"oro-server 0.8.2\"")-true)) :-
+    plg_cli_args(['/nonexistent/plg_missing.pl'], Args),
+    test_cli_server(Args, Port,
+                    plg_cli_call(Port, hello, [], Reply),
+                    Stderr),
+    (   sub_string(Stderr, _, _, _,
+                   "plugin /nonexistent/plg_missing.pl not loaded: \c
+                    no such readable Prolog file")
+    ->  Reported = true
+    ;   Reported = false
+    ).
+test(two_plugins, true(Listed-Replies == [true, true]-[ ok("\"both\""),
+                                                       ok("2")
+                                                     ])) :-
+    plg_cli_args([ 'test/fixtures/plugins/good_plugin.pl',
+                   'examples/plugins/count_instances.pl'
+                 ], Args),
+    test_cli_server(Args, Port,
+                    plg_cli_calls(Port,
+                                  [ listSimpleMethods-[],
+                                    plgEcho-["both"],
+                                    countInstancesOf-["Monkey"]
+                                  ],
+                                  [ListReply|Replies]),
+                    _),
+    test_expect_ok(listSimpleMethods, ListReply, Line),
+    test_json(Line, Signatures),
+    findall(Bool,
+            ( member(S, ["plgEcho(String)", "countInstancesOf(String)"]),
+              test_bool(memberchk(S, Signatures), Bool)
+            ),
+            Listed).
 test(help_mentions_plugin, true(Has == true)) :-
     test_checkout_path('server/oro_server.pl', Server),
     setup_call_cleanup(

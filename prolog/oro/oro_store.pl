@@ -57,6 +57,10 @@ one change.  Changes to schema triples bump a generation counter that
 the reasoner uses to know when its schema closures are stale.
 */
 
+:- thread_local
+    writing/0,                      % this thread runs oro_store_write/2
+    maybe_unused/1.                 % IRI of a triple this write removed
+
 :- dynamic
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
@@ -237,9 +241,25 @@ rdf_graph_count(Graph, N) :-
 %   when a database directory is attached, see oro_persist).  Writers
 %   are serialised; readers are not blocked.  When it returns, the
 %   change is durable if a database directory is attached.
+%
+%   Called inside Goal (by the same thread), it joins the outer change:
+%   its Goal runs in a nested rdf_transaction/2 (rolled back alone if
+%   it fails or raises), with no commit of its own; the outer one is
+%   journaled, committed and seen by the watchers once.  A plugin
+%   method calling oro_add/2 twice is thus one change.
 
 oro_store_write(Action, Goal) :-
-    with_mutex(oro_write, store_write(Action, Goal)).
+    (   writing
+    ->  rdf_transaction(Goal, oro(Action))
+    ;   with_mutex(oro_write,
+                   setup_call_cleanup(asserta(writing),
+                                      ( store_write(Action, Goal),
+                                        unindex_unused
+                                      ),
+                                      ( retractall(writing),
+                                        retractall(maybe_unused(_))
+                                      )))
+    ).
 
 %   A schema change bumps the generation when it is made (before other
 %   threads can see it) and again once the transaction is over,
@@ -311,6 +331,7 @@ oro_store_forget(Model, Profile, Triples) :-
     oro_graph(Model, profile(Profile), Graph),
     forall(member(rdf(S, P, O), Triples),
            ( note_schema_change(P, O),
+             note_maybe_unused(S, O),
              rdf_retractall(S, P, O, Graph)
            )).
 
@@ -326,6 +347,7 @@ oro_store_retract(Model, Triples) :-
 
 retract_triple(Model, Mask, rdf(S, P, O)) :-
     note_schema_change(P, O),
+    note_maybe_unused(S, O),
     forall(model_graph(Graph, Model, profile(_)),
            rdf_retractall(S, P, O, Graph)),
     (   ontology_graph(Onto),
@@ -450,6 +472,8 @@ oro_wipe_models :-
     with_mutex(oro_write,
                ( forall(retract(model_graph(Graph, _, _)),
                         rdf_unload_graph(Graph)),
+                 retractall(name_of(_, _)),
+                 forall(ontology_graph(Onto), index_graph_names(Onto)),
                  retractall(model_alias(_, _)),
                  flag(oro_schema_generation, G, G+1)
                )).
@@ -548,8 +572,9 @@ oro_scratch_graph(Graph) :-
 %   lookup).  The index is kept by the write path itself (a hash
 %   lookup per IRI; an rdf_monitor/2 callback would cost 3 us a
 %   triple), and by a scan of what rdf_load/2 and a restored database
-%   bring.  Entries are only dropped by a reset: the index grows no
-%   faster than rdf_db's resource table, which keeps every IRI it saw.
+%   bring.  An IRI whose last triple a write removed leaves the index
+%   once the write is committed, so names that come and go do not pile
+%   up (a write rolled back keeps its IRIs).
 
 oro_named(Lower, IRI) :-
     name_of(IRI, Lower).                % JIT-indexed on either argument
@@ -570,6 +595,29 @@ index_name(R) :-
     ;   oro_local_name(R, Local),
         downcase_atom(Local, Lower),
         assertz(name_of(R, Lower))
+    ).
+
+note_maybe_unused(S, O) :-
+    assertz(maybe_unused(S)),
+    (   atom(O)
+    ->  assertz(maybe_unused(O))
+    ;   true
+    ).
+
+%   unindex_unused: after a committed write, drop the IRIs no triple
+%   mentions any more.
+
+unindex_unused :-
+    (   maybe_unused(_)
+    ->  findall(R, retract(maybe_unused(R)), Rs0),
+        sort(Rs0, Rs),
+        forall(( member(R, Rs),
+                 \+ rdf(R, _, _),
+                 \+ rdf(_, _, R),
+                 \+ rdf_current_predicate(R)
+               ),
+               retractall(name_of(R, _)))
+    ;   true
     ).
 
 index_graph_names(Graph) :-
