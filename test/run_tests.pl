@@ -26,8 +26,30 @@ user:message_hook(plunit(Summary), silent, _) :-
     assertz(summary(Summary)),
     fail.
 
+%   Errors that plunit does not count are failures too: a file that
+%   does not load, a unit whose setup fails (its tests are then not
+%   run at all), an error printed by a server thread during a test.
+%   The failures plunit counts itself are not counted again, nor the
+%   errors a test provokes on purpose: a test file captures those in
+%   the threads for which it asserts user:capturing_messages(Thread).
+
+:- dynamic user:capturing_messages/1.
+
+user:message_hook(Term, error, _) :-
+    \+ counted_by_plunit(Term),
+    \+ ( thread_self(Me),
+         user:capturing_messages(Me)
+       ),
+    flag(oro_test_errors, N, N+1),
+    fail.
+
+counted_by_plunit(plunit(failed(_, _, _, _))).
+counted_by_plunit(plunit(failed_assertion(_, _, _, _, _, _, _))).
+counted_by_plunit(plunit(sto(_, _, _))).
+counted_by_plunit(plunit(sto(_, _))).
+
 %   A watchdog ends a run that hangs: after ORO_TEST_TIMEOUT seconds
-%   (default 1200) it prints the threads and their stacks and exits 2,
+%   (default 540) it prints the threads and their stacks and exits 2,
 %   so that a deadlock shows up as a failure with a diagnosis rather
 %   than as a CI run that never ends.
 
@@ -35,7 +57,7 @@ start_watchdog :-
     (   getenv('ORO_TEST_TIMEOUT', Text),
         atom_number(Text, Limit)
     ->  true
-    ;   Limit = 1200
+    ;   Limit = 540
     ),
     thread_create(watchdog(Limit), _, [alias(test_watchdog), detached(true)]).
 
@@ -68,8 +90,17 @@ main :-
     ->  true
     ;   true
     ),
-    summary(S),
-    Failed is S.failed + S.failed_assertions + S.sto,
+    (   summary(S)
+    ->  true
+    ;   S = _{passed:0, failed:0, failed_assertions:0, sto:0}
+    ),
+    flag(oro_test_errors, Errors, Errors),
+    (   Errors > 0
+    ->  format("~d error(s) outside the tests' own results (see above)~n",
+               [Errors])
+    ;   true
+    ),
+    Failed is S.failed + S.failed_assertions + S.sto + Errors,
     format("~d passed, ~d failed~n", [S.passed, Failed]),
     thread_send_message(test_watchdog, done),
     (   Failed =:= 0

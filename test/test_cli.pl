@@ -79,4 +79,98 @@ test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-ser
         Reply = ["ok", "\"oro-server 0.8.2\"", "#end#"]
     ).
 
+%   Exposing the server (--host other than loopback) warns on stderr
+%   that the protocol has no authentication; the default bind does not.
+%   The exposed server runs for the time of one hello, on a free port,
+%   and is only ever reached through 127.0.0.1.
+
+test(exposed_host_warns,
+     [true(Reply-Warned == ["ok", "\"oro-server 0.8.2\"", "#end#"]-true)]) :-
+    test_cli_server(['--host=0.0.0.0', '--no-commonsense'], Port,
+                    hello(Port, Reply), Stderr),
+    test_bool(sub_string(Stderr, _, _, _, "no authentication"), Warned).
+test(loopback_does_not_warn,
+     [true(Reply-Warned == ["ok", "\"oro-server 0.8.2\"", "#end#"]-false)]) :-
+    test_cli_server(['--no-commonsense'], Port, hello(Port, Reply), Stderr),
+    test_bool(sub_string(Stderr, _, _, _, "authentication"), Warned).
+
+%   --save-dir=DIR: save("x.owl") writes DIR/x.owl; a path going up out
+%   of DIR or an absolute one, for the robot's model or an agent's, gets
+%   an error and writes nothing; the saved file loads back with
+%   --ontology.
+
+test(save_dir,
+     [ setup(cli_save_dir(Dir)),
+       cleanup(delete_directory_and_contents(Dir)),
+       true(Got == [ ok(""), ok(""), ok(""), true,
+                     error, error, error, false,
+                     ok("true")
+                   ])
+     ]) :-
+    file_base_name(Dir, Base),
+    atomic_list_concat(['"../', Base, '_up.owl"'], Up),
+    atomic_list_concat([Dir, '_abs.owl'], Abs),
+    format(atom(AbsParam), '"~w"', [Abs]),
+    atomic_list_concat(['"../', Base, '_agent.owl"'], AgentUp),
+    atom_concat('--save-dir=', Dir, SaveDir),
+    cli_session([SaveDir],
+                [ add-["[gerard rdf:type Human, book1 isOn shelf1]"],
+                  save-["\"x.owl\""],
+                  save-["gerard", "\"y.owl\""],
+                  save-[Up],
+                  save-[AbsParam],
+                  save-["gerard", AgentUp]
+                ],
+                Replies),
+    directory_file_path(Dir, 'x.owl', Saved),
+    test_bool(exists_file(Saved), Written),
+    atomic_list_concat([Dir, '_up.owl'], UpFile),
+    atomic_list_concat([Dir, '_agent.owl'], AgentFile),
+    test_bool(( member(F, [UpFile, Abs, AgentFile]), exists_file(F) ), Outside),
+    atom_concat('--ontology=', Saved, Ontology),
+    cli_session(['--no-commonsense', Ontology],
+                [check-["[book1 isOn shelf1]"]], Checked),
+    (   Replies = [Add, SaveX, SaveY, E1, E2, E3],
+        Checked = [Check]
+    ->  maplist(cli_reply_kind, [E1, E2, E3], Errors),
+        append([[Add, SaveX, SaveY, Written], Errors, [Outside, Check]], Got)
+    ;   Got = Replies-Checked
+    ).
+
+test(save_dir_missing, [true(Code \== 0)]) :-
+    cli_run(['--save-dir=/nonexistent/oro-save-dir'], Code, _).
+
+cli_save_dir(Dir) :-
+    tmp_file(oro_cli_save, Dir),
+    make_directory(Dir).
+
+%   cli_session(+Args, +Requests, -Replies): run the server with Args
+%   and the Method-Params Requests in order on one connection; Replies
+%   is no_server(Stderr) if it did not start.
+
+cli_session(Args, Requests, Replies) :-
+    test_cli_server(Args, Port, cli_calls(Port, Requests, Replies0), Stderr),
+    (   Port == none
+    ->  Replies = no_server(Stderr)
+    ;   Replies = Replies0
+    ).
+
+%   cli_calls(+Port, +Requests, -Replies): the Method-Params Requests in
+%   order on one connection.
+
+cli_calls(Port, Requests, Replies) :-
+    setup_call_cleanup(
+        oro_connect(Port, Conn),
+        maplist(cli_call(Conn), Requests, Replies),
+        oro_disconnect(Conn)).
+
+cli_call(Conn, Method-Params, Reply) :-
+    oro_call(Conn, Method, Params, Reply).
+
+cli_reply_kind(Reply, Kind) :-
+    (   Reply = error(_, _)
+    ->  Kind = error
+    ;   Kind = Reply
+    ).
+
 :- end_tests(command_line).

@@ -168,6 +168,7 @@ exh_round(Conn, Kind, Round, From, Statements, RssLimit, Result) :-
 
 exh_measure(Atoms, Resources, RssKB) :-
     rdf_gc,
+    garbage_collect_clauses,
     garbage_collect_atoms,
     garbage_collect_atoms,
     statistics(atoms, Atoms),

@@ -158,6 +158,54 @@ test(datatype_property, [ setup(lookup_testsuite),
 
 
                  /*******************************
+                 *          NAME INDEX          *
+                 *******************************/
+
+%   Lookup by name goes through the store's index of local names
+%   (oro_named/2): it must follow adds, removes (the name leaves the
+%   index with its last triple), memory forgetting's writes, rolled
+%   back writes and resets.
+
+index_has(Lower, Has) :-
+    (   oro_store:oro_named(Lower, _)
+    ->  Has = true
+    ;   Has = false
+    ).
+
+:- begin_tests(lookup_name_index, [setup(lookup_testsuite)]).
+
+test(follows_add_and_remove,
+     [ true(Got == [['Zebulon'-instance], true, [], false, ['Zebulon'-instance]]) ]) :-
+    oro_add(myself, ["Zebulon rdf:type Animal"]),
+    lookup(zebulon, M1),
+    index_has(zebulon, H1),
+    oro_remove(myself, ["Zebulon rdf:type Animal"]),
+    lookup(zebulon, M2),
+    index_has(zebulon, H2),
+    oro_add(myself, ["Zebulon rdf:type Animal"]),
+    lookup(zebulon, M3),
+    Got = [M1, H1, M2, H2, M3].
+test(kept_while_used, [true(M == [zoe-instance])]) :-
+    oro_add(myself, ["zoe rdf:type Animal", "baboon sees zoe"]),
+    oro_remove(myself, ["zoe rdf:type Animal"]),
+    lookup(zoe, M).
+test(kept_when_the_remove_is_rolled_back, [true(M == [zed-instance])]) :-
+    oro_add(myself, ["zed rdf:type Animal"]),
+    catch(oro_store:oro_store_write(test_rollback,
+                                    ( oro_remove(myself, ["zed rdf:type Animal"]),
+                                      throw(rolled_back)
+                                    )),
+          rolled_back, true),
+    lookup(zed, M).
+test(ontology_names_after_reset, [true(M == ['Monkey'-class])]) :-
+    oro_add(myself, ["zorro rdf:type Animal"]),
+    oro_reset,
+    lookup(monkey, M).
+
+:- end_tests(lookup_name_index).
+
+
+                 /*******************************
                  *     LOOKUP BY KIND (§13.6)   *
                  *******************************/
 

@@ -364,23 +364,39 @@ write_commit_log(File, Records, Seq) :-
 
 repair_directory(Dir, Committed) :-
     forall(directory_member(Dir, New, [recursive(true), extensions([new])]),
-           repair_snapshot(New)),
+           repair_new(Dir, New)),
     forall(directory_member(Dir, Journal, [recursive(true), extensions([jrn])]),
            repair_journal(Journal, Committed)).
 
+%   repair_new(+Dir, +New): a file left by a write interrupted before
+%   its rename.
+%
 %   rdf_persistency compacts by writing Graph.trp.new, deleting the
 %   journal, then renaming.  If the journal is gone the new snapshot is
 %   complete; otherwise it may not be, and the journal still holds all.
+%   The journal is not next to the snapshot: rdf_persistency puts each
+%   file in a directory of its own hash, so it is looked for by name
+%   in the whole database directory.
+%
+%   Any other .new file is our commit log being rewritten: the old one
+%   is whole (it is replaced only once the new one is written), so the
+%   new one is dropped.
 
-repair_snapshot(New) :-
+repair_new(Dir, New) :-
     file_name_extension(Snapshot, new, New),
     file_name_extension(Base, trp, Snapshot),
-    file_name_extension(Base, jrn, Journal),
-    (   exists_file(Journal)
+    !,
+    file_base_name(Base, Name),
+    file_name_extension(Name, jrn, JournalName),
+    (   directory_member(Dir, Journal, [recursive(true), extensions([jrn])]),
+        file_base_name(Journal, JournalName)
     ->  delete_file(New)
     ;   rename_file(New, Snapshot)
     ),
     debug(oro(persist), 'Repaired an interrupted compaction: ~w', [Snapshot]).
+repair_new(_, New) :-
+    delete_file(New),
+    debug(oro(persist), 'Dropped an interrupted rewrite: ~w', [New]).
 
 repair_journal(File, Committed) :-
     setup_call_cleanup(
