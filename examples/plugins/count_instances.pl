@@ -12,7 +12,8 @@ the instances (getInstancesOf sends every instance with its label):
 Both count the named individuals of the class in the robot's model,
 inferences included (countDirectInstancesOf only those whose most
 specific class it is).  An unknown class, or something that is not a
-class, answers the same NotFoundException as getInstancesOf.
+class, answers the same NotFoundException as getInstancesOf.  Both only
+read: they are declared read_only (no store write, no lock).
 
 Load it with
 
@@ -30,10 +31,10 @@ and try it with telnet:
 
 oro_methods:method(countInstancesOf(string), taxonomy,
                    "Returns the number of instances (asserted or inferred) of a class.",
-                   count_instances_of(oro_instances)).
+                   read_only(count_instances_of(oro_instances))).
 oro_methods:method(countDirectInstancesOf(string), taxonomy,
                    "Returns the number of instances whose most specific class is the given one.",
-                   count_instances_of(oro_direct_instances)).
+                   read_only(count_instances_of(oro_direct_instances))).
 
 %!  count_instances_of(:Question, +ClassName, -Reply) is det.
 %
