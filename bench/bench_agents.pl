@@ -67,7 +67,7 @@ opt_type(time_base, time_base, nonneg).
 opt_type(checkers, checkers, nonneg).
 opt_type(spread_facts, spread_facts, nonneg).
 opt_type(spread_seconds, spread_seconds, number).
-opt_type(spread_batch, spread_batch, positive_integer).
+opt_type(spread_batch, spread_batch, nonneg).
 opt_type(case, case, oneof([all, agents, forget, spread])).
 
 main :-

@@ -28,7 +28,7 @@
 
 :- initialization(main, main).
 
-opt_type(samples, samples, positive_integer).
+opt_type(samples, samples, nonneg).
 
 main :-
     current_prolog_flag(argv, Argv),

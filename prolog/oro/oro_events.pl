@@ -176,7 +176,6 @@ and ranges.
     touched_schema/0,
     in_commit/0,
     delta/5,                        % Model, add|del, S, P, O
-    delta_size/1,                   % N
     delta_overflow/0.
 
 :- thread_local
@@ -184,7 +183,6 @@ and ranges.
     touched_schema/0,
     in_commit/0,
     delta/5,
-    delta_size/1,
     delta_overflow/0.
 
 %   Bounds of incremental evaluation: the triples a transaction may
@@ -352,7 +350,7 @@ note_delta(Model, Layer, Sign0, S, P, O) :-
         delta_room
     ->  assertz(delta(Model, Sign, S, P, O))
     ;   retractall(delta(_, _, _, _, _)),
-        retractall(delta_size(_)),
+        nb_setval(oro_events_delta_size, 0),
         assertz(delta_overflow)
     ).
 
@@ -368,15 +366,19 @@ delta_sign(Model, Layer, Sign0, Sign) :-
 opposite(add, del).
 opposite(del, add).
 
+%   delta_room: the delta may take one more triple.  Its size is
+%   counted in a global variable of the writing thread (a counter fact
+%   would cost a retract and an assert a triple).
+
 delta_room :-
-    (   retract(delta_size(N0))
+    (   nb_current(oro_events_delta_size, N0)
     ->  true
     ;   N0 = 0
     ),
     max_delta(Max),
     N0 < Max,
     N is N0 + 1,
-    assertz(delta_size(N)).
+    nb_setval(oro_events_delta_size, N).
 
 flush_changes :-
     findall(M-P, retract(touched(M, P)), Touched),
@@ -406,7 +408,7 @@ flush_changes :-
 %   d(Model, Sign, S, P, O) terms, or `full`.
 
 take_delta(Delta) :-
-    retractall(delta_size(_)),
+    nb_setval(oro_events_delta_size, 0),
     (   retract(delta_overflow)
     ->  Delta = full
     ;   findall(d(M, Sign, S, P, O), retract(delta(M, Sign, S, P, O)), Delta)
