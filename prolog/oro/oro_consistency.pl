@@ -345,25 +345,10 @@ all_different(Model, A, B) :-
     ;   rdf_equal(owl:members, P)
     ),
     oro_asserted(Model, Axiom, P, List),
-    rdf_list_members(Model, List, Members),
+    oro_rdf_list(Model, List, Members),
     append(_, [A|Rest], Members),
     member(B, Rest).
 
-rdf_list_members(Model, List, Members) :-
-    rdf_equal(rdf:nil, Nil),
-    rdf_equal(rdf:first, First),
-    rdf_equal(rdf:rest, Rest),
-    list_members(Model, List, Nil, First, Rest, Members, 10000).
-
-list_members(_, Nil, Nil, _, _, [], _) :- !.
-list_members(Model, Cell, Nil, First, Rest, [H|T], Budget) :-
-    Budget > 0,
-    oro_asserted(Model, Cell, First, H),
-    oro_asserted(Model, Cell, Rest, Next),
-    !,
-    Budget1 is Budget - 1,
-    list_members(Model, Next, Nil, First, Rest, T, Budget1).
-list_members(_, _, _, _, _, [], _).
 
 		 /*******************************
 		 *        VERDICT CACHE         *

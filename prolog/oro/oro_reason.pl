@@ -21,7 +21,8 @@
             oro_compile_schema/2,       % +Model, -Key
             oro_drop_schema/1,          % +Key
             oro_with_schemas/2,         % +ModelKeys, :Goal
-            oro_pattern_dependencies/3  % +Model, +Triples, -Predicates
+            oro_pattern_dependencies/3, % +Model, +Triples, -Predicates
+            oro_rdf_list/3              % +Model, +List, -Members
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
@@ -657,14 +658,14 @@ all_members(Model, Class, Members) :-
     rdf_equal(owl:members, MembersP),
     oro_asserted(Model, Axiom, Type, Class),
     oro_asserted(Model, Axiom, MembersP, List),
-    rdf_list(Model, List, Members).
+    oro_rdf_list(Model, List, Members).
 
-%!  rdf_list(+Model, +List, -Members) is semidet.
+%!  oro_rdf_list(+Model, +List, -Members) is semidet.
 %
-%   Members are the elements of the well-formed RDF list List (at most
-%   10,000); fails on a malformed or cyclic list.
+%   Members are the elements of the well-formed RDF list List asserted
+%   in Model (at most 10,000); fails on a malformed or cyclic list.
 
-rdf_list(Model, List, Members) :-
+oro_rdf_list(Model, List, Members) :-
     rdf_equal(rdf:nil, Nil),
     rdf_equal(rdf:first, First),
     rdf_equal(rdf:rest, Rest),
@@ -696,7 +697,7 @@ class_definition(Model, R, Def) :-
 class_definition(Model, C, Def) :-
     list_constructor(P, Functor),
     oro_asserted(Model, C, P, List),
-    rdf_list(Model, List, Members),
+    oro_rdf_list(Model, List, Members),
     Def =.. [Functor, Members].
 
 :- rdf_meta
@@ -745,7 +746,7 @@ filler(Model, F, Filler) :-
 datatype_facets(Model, F, Facets) :-
     rdf_equal(owl:withRestrictions, With),
     (   oro_asserted(Model, F, With, List),
-        rdf_list(Model, List, Items)
+        oro_rdf_list(Model, List, Items)
     ->  findall(Facet, ( member(Item, Items),
                          oro_asserted(Model, Item, P, V),
                          (   facet(P, Name)
@@ -764,7 +765,7 @@ facet(xsd:maxExclusive, max_exclusive).
 chain_axiom(Model, P, Links) :-
     rdf_equal(owl:propertyChainAxiom, Chain),
     oro_asserted(Model, P, Chain, List),
-    rdf_list(Model, List, Members),
+    oro_rdf_list(Model, List, Members),
     Members \== [],
     maplist(chain_link(Model), Members, Links).
 
