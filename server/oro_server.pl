@@ -49,7 +49,8 @@ nothing.
    ).
 
 :- dynamic
-    connection/1.                   % Mutex of a live connection
+    connection/1,                   % Mutex of a live connection
+    closed_connection/1.            % Mutex of one the shutdown closed
 
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
@@ -242,8 +243,11 @@ oro_server_shutdown(Server) :-
     debug(oro(server), 'Shut down: ~D of ~D connection(s) finished in time',
           [Idle, N]).
 
-%   Holding a connection's mutex means no request of it is in progress,
-%   and none can start: the lock is kept until the process ends.
+%   Holding a connection's mutex means no request of it is in progress;
+%   marking it closed (under the mutex) means none will be served
+%   after.  The mutex is released again: the connection's event
+%   delivery thread takes it too, and must not block forever (halt/1
+%   would wait for it).
 
 lock_connection(Grace, Mutex) :-
     Deadline is Grace * 20,
@@ -251,7 +255,8 @@ lock_connection(Grace, Mutex) :-
 
 lock_connection(Max, N, Mutex) :-
     (   catch(mutex_trylock(Mutex), _, fail)
-    ->  true
+    ->  assertz(closed_connection(Mutex)),
+        mutex_unlock(Mutex)
     ;   \+ connection(Mutex)              % it ended meanwhile
     ->  true
     ;   N < Max
@@ -352,7 +357,10 @@ serve_stream(Server, Pair, Peer) :-
                 connection_ended(Context, Error)),
           oro_connection_closed(Context)
         ),
-        ( with_mutex(oro_connections, retractall(connection(Mutex))),
+        ( with_mutex(oro_connections,
+                     ( retractall(connection(Mutex)),
+                       retractall(closed_connection(Mutex))
+                     )),
           catch(mutex_destroy(Mutex), _, true)    % held by a shutdown
         )).
 
@@ -421,10 +429,12 @@ handle_request(request(Method, _), Context, Out) :-
     fail.
 handle_request(request(Method, Params), Context, Out) :-
     with_mutex(Context.mutex,
-               ( oro_dispatch(Context, Method, Params, Reply),
-                 (   Reply = ok(Value)
-                 ->  oro_write_ok(Out, Value)
-                 ;   Reply = error(Name, Message),
-                     oro_write_error(Out, Name, Message)
-                 )
+               (   closed_connection(Context.mutex)
+               ->  fail                     % the server is shutting down
+               ;   oro_dispatch(Context, Method, Params, Reply),
+                   (   Reply = ok(Value)
+                   ->  oro_write_ok(Out, Value)
+                   ;   Reply = error(Name, Message),
+                       oro_write_error(Out, Name, Message)
+                   )
                )).
