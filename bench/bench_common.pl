@@ -4,6 +4,7 @@
             bench_with_server/4,        % +Args, -Port, -Pid, :Goal
             bench_with_script/5,        % +Script, +Args, -Port, -Pid, :Goal
             bench_server_script/1,      % -File
+            bench_stop_process/1,       % +Pid
             bench_memory/2,             % +Pid, -Memory
             bench_with_connection/3,    % +Port, -Conn, :Goal
             bench_send/3,               % +Conn, +Method, +Params
@@ -17,6 +18,7 @@
             bench_time/2,               % :Goal, -Micros
             bench_measure/5,            % +N, ?I, :Goal, :Prepare, -Times
             bench_measure/6,            % +N, +Seconds, ?I, :Goal, :Prepare, -Times
+            bench_measure/7,            % +N, +Seconds, ?I, :Goal, :Prepare, ?Template, -Samples
             bench_summary/3,            % +Times, -Median, -P99
             bench_stats/2,              % +Times, -Stats
             bench_micros/2,             % +Micros, -Text
@@ -35,6 +37,7 @@
 :- use_module(library(readutil)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(pairs)).
 :- use_module(library(option)).
 :- use_module(library(predicate_options)).
 :- use_module(library(error)).
@@ -46,7 +49,8 @@
     bench_with_connection(+, -, 0),
     bench_time(0, -),
     bench_measure(+, ?, 0, 0, -),
-    bench_measure(+, +, ?, 0, 0, -).
+    bench_measure(+, +, ?, 0, 0, -),
+    bench_measure(+, +, ?, 0, 0, ?, -).
 
 :- predicate_options(bench_micros/3, 3,
                      [ units(oneof([us, auto]))
@@ -142,7 +146,8 @@ term_list(Term, List) :-
 %   server/oro_server.pl --port=0` followed by the command-line
 %   arguments Args, runs as a child process Pid listening on Port
 %   (read from its first line, `oro listening on 127.0.0.1:Port`).  The
-%   server is killed afterwards, whatever Goal did.
+%   server is stopped afterwards (bench_stop_process/1), whatever Goal
+%   did.
 %
 %   @error bench_no_port(Line) if the first line names no port.
 
@@ -154,8 +159,8 @@ bench_with_server(Args, Port, Pid, Goal) :-
 %
 %   Run once(Goal) while `swipl Script Args...` runs as a child process
 %   Pid whose first line on standard output ends with `:Port` (as the
-%   server's `oro listening on 127.0.0.1:Port`).  The child is killed
-%   afterwards, whatever Goal did.
+%   server's `oro listening on 127.0.0.1:Port`).  The child is stopped
+%   afterwards (bench_stop_process/1), whatever Goal did.
 %
 %   @error bench_no_port(Line) if the first line names no port.
 
@@ -167,10 +172,55 @@ bench_with_script(Script, Args, Port, Pid, Goal) :-
           server_port(Line, Port),
           once(Goal)
         ),
-        ( catch(process_kill(Pid), _, true),
-          process_wait(Pid, _),
+        ( bench_stop_process(Pid),
           close(Out)
         )).
+
+%!  bench_stop_process(+Pid) is det.
+%
+%   Stop the child process Pid and wait for it to end: SIGTERM; if it
+%   still runs 10 s later, SIGINT; 10 s after that, SIGKILL.  Each step
+%   beyond SIGTERM is reported on standard error.  The server's SIGTERM
+%   can be lost (with SWI-Prolog 9.0.4 a SIGTERM the kernel hands to
+%   another thread than main runs no handler, see server/oro_server.pl);
+%   its SIGINT cannot, while a child that is not the server may ignore
+%   SIGINT.  A plain process_kill/1 followed by process_wait/2 then
+%   waits forever.
+
+bench_stop_process(Pid) :-
+    stop_process([term, int, kill], Pid).
+
+stop_process([Signal|Signals], Pid) :-
+    catch(process_kill(Pid, Signal), _, true),
+    (   exited_within(Pid, 10)
+    ->  true
+    ;   Signals = [Next|_]
+    ->  upcase_atom(Signal, S),
+        upcase_atom(Next, N),
+        format(user_error, "Warning: process ~w still running 10 s after \c
+                            SIG~w: sending SIG~w~n", [Pid, S, N]),
+        stop_process(Signals, Pid)
+    ;   process_wait(Pid, _)
+    ).
+
+%   exited_within(+Pid, +Seconds): Pid ended (and was waited for) within
+%   Seconds.  process_wait/3's timeout(T) blocks until the end with
+%   SWI-Prolog 9.0.4 unless T is 0, hence the polling.
+
+exited_within(Pid, Seconds) :-
+    get_time(Now),
+    Deadline is Now + Seconds,
+    exited_by(Pid, Deadline).
+
+exited_by(Pid, Deadline) :-
+    catch(process_wait(Pid, Status, [timeout(0)]), _, Status = gone),
+    (   Status \== timeout
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.05),
+        exited_by(Pid, Deadline)
+    ).
 
 %!  bench_server_script(-File) is det.
 %
@@ -483,19 +533,31 @@ bench_measure(N, I, Goal, Prepare, Times) :-
 %   up the run.
 
 bench_measure(N, Seconds, I, Goal, Prepare, Times) :-
+    bench_measure(N, Seconds, I, Goal, Prepare, -, Samples),
+    pairs_values(Samples, Times).
+
+%!  bench_measure(+N, +Seconds, ?I, :Goal, :Prepare, ?Template, -Samples) is det.
+%
+%   As bench_measure/6, but Samples are Template-Micros, one for each
+%   sample whose Goal succeeded, in order, with Template as Prepare and
+%   Goal left it: a record of what each timed sample did (the statement
+%   it added, for instance).
+
+bench_measure(N, Seconds, I, Goal, Prepare, Template, Samples) :-
     get_time(T0),
     Deadline is T0 + Seconds,
-    findall(T, ( between(1, N, I),
-                 (   I > 20,
-                     get_time(Now),
-                     Now > Deadline
-                 ->  !,
-                     fail
-                 ;   true
-                 ),
-                 once(Prepare),
-                 bench_time(Goal, T)
-               ), Times).
+    findall(Template-T,
+            ( between(1, N, I),
+              (   I > 20,
+                  get_time(Now),
+                  Now > Deadline
+              ->  !,
+                  fail
+              ;   true
+              ),
+              once(Prepare),
+              bench_time(Goal, T)
+            ), Samples).
 
 %!  bench_stats(+Times, -Stats) is det.
 %

@@ -6,38 +6,52 @@
                                   [--json=bench/results.json]
                                   [--log=../shared/workloads/robot-session-2011.log]
 
-    For each size, a server child process (server/oro_server.pl
-    --port=0) loads a synthetic robot world of that many asserted
-    triples over the socket, then one connection measures add 1, add a
-    batch of 100, update, remove, check (asserted, inferred type,
-    inferred property), find with 1 to 3 patterns, lookup, getInfos,
-    the agents' findForAgent and addForAgent, 8 concurrent clients,
-    and the latency of a NEW_INSTANCE event with 1,000 watchers
-    registered.  Median, p99 and maximum of each, the server's memory
-    (VmRSS after the load, VmHWM at the end).
+    For each size, the same synthetic robot world is first loaded in
+    this process with library(oro) (oro_init/1, oro_add/2), where
+    check (asserted, inferred type, inferred property) and find with 1
+    pattern are measured with oro_check/2 and oro_find/4; then a server
+    child process (server/oro_server.pl --port=0) loads it over the
+    socket, and one connection measures add 1, add a batch of 100,
+    update, remove (of what add 1 added), check (asserted, inferred
+    type, inferred property), find with 1 to 3 patterns, lookup,
+    getInfos, the agents' findForAgent and addForAgent, 8 concurrent
+    clients, and the latency of a NEW_INSTANCE event with 1,000
+    watchers registered.  Median, p99 and maximum of each, the
+    server's memory (VmRSS after the load, VmHWM at the end).
 
     The floors, measured in the same run: an echo server with oro's
     framing and none of its work (bench_common:bench_echo_start/2, run
     as a child process of this script with --echo; re-measured before
-    each size's figures, as the machine is noisy), raw rdf_assert/4 and
-    rdf/3 in this process, and a bare `swipl -g halt` for the startup.
-    Every figure is printed with its ratio to its floor.
+    each size's figures and before the replay, as the machine is
+    noisy), raw rdf_assert/4 and bound rdf/3 in this process (before
+    library(oro) starts), and a bare `swipl -g halt` for the startup.
+    Every figure is printed with its ratio to its floor: the socket
+    figures to the echo round trip, the in-process ones to one rdf/3
+    probe, the loads to rdf_assert/4, the replay to as many echo round
+    trips as it sends requests.
 
-    Then: startup to listening of the server with the bundled
-    ontology; startup with the largest world written as Turtle and
-    given with --ontology=FILE (and, as its floor, rdf_load/2 of the
-    same file in this process); the replay of the robot session of
-    2011 (all requests, each client thread on its own connection, in
-    log order, no sleeps) on a fresh server with the robot id of that
-    experiment; the 1M/100k ratios; the targets with PASS/MISS.
+    Also: the startup with the largest world's robot part (at least
+    that many triples) written as Turtle and given with
+    --ontology=FILE (and, as its floor, rdf_load/2 of the same file in
+    this process, done first, while no library(oro) monitor watches
+    the store); the replay of the robot session of 2011 (all requests,
+    each client thread on its own connection, in log order, no sleeps)
+    on a fresh server with the robot id of that experiment; startup to
+    listening of the server with the bundled ontology; the 1M/100k
+    ratios; the targets with PASS/MISS.
 
     A table on stdout, progress on stderr, and everything in the JSON
-    file (default bench/results.json).  --budget bounds the seconds
-    spent sampling one operation (at least 20 samples are taken).
+    file (default bench/results.json): the machine line, the floors,
+    each size's table rows, the targets with their verdicts, and the
+    report as printed (`report`, one string a line).  --budget bounds
+    the seconds spent sampling one operation (at least 20 samples are
+    taken).
 */
 
 :- prolog_load_context(directory, Dir),
-   asserta(user:file_search_path(oro_bench, Dir)).
+   asserta(user:file_search_path(oro_bench, Dir)),
+   atom_concat(Dir, '/../prolog', Lib),
+   asserta(user:file_search_path(library, Lib)).
 
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -50,6 +64,7 @@
 :- use_module(library(pairs)).
 :- use_module(library(http/json)).
 :- use_module(library(main), [argv_options/3]).
+:- use_module(library(oro)).
 :- use_module(bench_common).
 
 %   main/0 runs only when this file is the script swipl was started with,
@@ -77,13 +92,21 @@ main :-
     ).
 
 %   echo_main: the echo server as a child process: print its port, then
-%   serve until killed.
+%   serve until SIGTERM or SIGINT.  As in the server, the main thread
+%   handles both by halting (SIGINT is the one that cannot be lost:
+%   see bench_common:bench_stop_process/1).
 
 echo_main :-
     bench_echo_start(0, Echo),
+    on_signal(term, _, echo_signal),
+    on_signal(int, _, echo_signal),
     format("echo listening on 127.0.0.1:~w~n", [Echo.port]),
     flush_output,
-    thread_get_message(_).
+    thread_get_message(echo_stop),
+    halt(0).
+
+echo_signal(_Signal) :-
+    thread_send_message(main, echo_stop).
 
 		 /*******************************
 		 *            THE RUN           *
@@ -100,45 +123,78 @@ bench(Options) :-
     option(log(Log), Options, DefaultLog),
     get_time(Start),
     nb_setval(bench_start, Start),
-    bench_machine,
-    machine(Machine),
-    format("~d cores; ~w; sizes ~w, ~d samples, budget ~d s an operation~n",
-           [Machine.cores, Machine.date, Sizes, Samples, Budget]),
+    retractall(said(_)),
+    machine(Sizes, Samples, Budget, Machine),
     Params = params{samples:Samples, budget:Budget},
     in_process_floors(Floors),
-    self_script(Self),
-    bench_with_script(Self, ['--echo'], EchoPort, _,
-                      maplist(size_figures(EchoPort, Params, Floors), Sizes, PerSize)),
-    startup_figures(Startup),
     max_list(Sizes, Largest),
     turtle_figures(Largest, Turtle),
-    replay_figures(Log, Replay),
+    self_script(Self),
+    bench_with_script(Self, ['--echo'], EchoPort, _,
+                      ( maplist(size_figures(EchoPort, Params, Floors), Sizes, PerSize),
+                        replay_figures(Log, EchoPort, Params, Replay)
+                      )),
+    startup_figures(Startup),
     scaling(PerSize, Scaling),
     targets(PerSize, Startup, Turtle, Replay, Scaling, Targets),
     get_time(End),
     Total is End - Start,
-    format("~nWhole run: ~1f s~n", [Total]),
+    say("~nWhole run: ~1f s~n", [Total]),
+    say("JSON: ~w~n", [JSON]),
+    report(Report),
     Results = results{machine:Machine, params:Params.put(sizes, Sizes),
                       floors:Floors, sizes:PerSize, startup:Startup,
                       turtle:Turtle, replay:Replay, scaling:Scaling,
-                      targets:Targets, seconds:Total},
-    write_json(JSON, Results),
-    format("JSON: ~w~n", [JSON]).
+                      targets:Targets, seconds:Total, report:Report},
+    write_json(JSON, Results).
 
 self_script(File) :-
     absolute_file_name(oro_bench('bench_full.pl'), File, [access(read)]).
 
-machine(machine{prolog:V, cpu:CPU, cores:Cores, date:Date}) :-
+%   machine(+Sizes, +Samples, +Budget, -Machine): print the machine line
+%   (bench_common:bench_machine/0) and the run's parameters; Machine
+%   holds both lines as printed and their parts.
+
+machine(Sizes, Samples, Budget,
+        machine{line:Line, run_line:RunLine, prolog:V, cpu:CPU, cores:Cores,
+                date:Date}) :-
+    with_output_to(string(Line0), bench_machine),
+    split_string(Line0, "", "\n", [Line]),
+    say("~w~n", [Line]),
     current_prolog_flag(version, V),
     catch(( read_file_to_string('/proc/cpuinfo', Info, []),
             sub_string(Info, B, _, _, "model name"),
             sub_string(Info, B, 80, _, L0),
-            split_string(L0, "\n", "", [Line|_]),
-            split_string(Line, ":", " \t", [_, CPU])
+            split_string(L0, "\n", "", [CPULine|_]),
+            split_string(CPULine, ":", " \t", [_, CPU])
           ), _, CPU = "unknown cpu"),
     current_prolog_flag(cpu_count, Cores),
     get_time(Now),
-    format_time(string(Date), '%F %T', Now).
+    format_time(string(Date), '%F %T', Now),
+    format(string(RunLine), "~d cores; ~w; sizes ~w, ~d samples, budget ~d s an operation",
+           [Cores, Date, Sizes, Samples, Budget]),
+    say("~w~n", [RunLine]).
+
+%   say(+Format, +Args): print on stdout (flushed) and keep the text
+%   for the report in the JSON file.  report(-Lines): what say/2
+%   printed, one string a line.
+
+:- dynamic said/1.
+
+say(Format, Args) :-
+    format(string(Text), Format, Args),
+    write(Text),
+    flush_output,
+    assertz(said(Text)).
+
+report(Lines) :-
+    findall(T, said(T), Texts),
+    atomic_list_concat(Texts, Whole),
+    split_string(Whole, "\n", "", Lines0),
+    (   append(Lines, [""], Lines0)
+    ->  true
+    ;   Lines = Lines0
+    ).
 
 %   progress(+Format, +Args): a line on stderr, with the seconds since
 %   the start.
@@ -157,10 +213,11 @@ progress(Format, Args) :-
 
 %   in_process_floors(-Floors): rdf_assert/4 of 100,000 triples shaped
 %   like the world's into an empty graph (default hash tables, as the
-%   server has), and bound rdf/3 probes on them.
+%   server has), and bound rdf/3 probes on them; rdf_probe_us is the
+%   time of one probe, the floor of the in-process check and find.
 
 in_process_floors(floors{rdf_assert_per_s:AssertRate, rdf_probe_per_s:ProbeRate,
-                         triples:N}) :-
+                         rdf_probe_us:ProbeMicros, triples:N}) :-
     progress("floors in process: rdf_assert/4, rdf/3", []),
     N = 100000,
     Graph = bench_floor,
@@ -179,28 +236,33 @@ in_process_floors(floors{rdf_assert_per_s:AssertRate, rdf_probe_per_s:ProbeRate,
     rdf_unload_graph(Graph),
     AssertRate is N / (T1 - T0),
     ProbeRate is N / (T2 - T1),
-    format("~nFloors in this process (~D triples): rdf_assert/4 ~0f/s, \c
-            bound rdf/3 ~0f/s~n", [N, AssertRate, ProbeRate]).
+    ProbeMicros is 1.0e6 / ProbeRate,
+    say("~nFloors in this process (~D triples): rdf_assert/4 ~0f/s, \c
+         bound rdf/3 ~0f/s (~3f us a probe)~n",
+        [N, AssertRate, ProbeRate, ProbeMicros]).
 
 		 /*******************************
 		 *          ONE SIZE            *
 		 *******************************/
 
-%   size_figures(+EchoPort, +Params, +Size, -Figures): everything
-%   measured on a server holding a world of Size asserted triples.
+%   size_figures(+EchoPort, +Params, +Floors, +Size, -Figures):
+%   everything measured on a world of Size asserted triples: first in
+%   this process, then on a server holding it.
 
 size_figures(EchoPort, Params, Floors, Size, Figures) :-
     world(Size, World),
+    in_process_figures(Params, Floors, World, InProcess),
     progress("size ~D: starting a server", [Size]),
     bench_with_server([], Port, Pid,
                       bench_with_connection(
                           Port, C,
                           server_figures(C, Port, Pid, EchoPort, Params,
-                                         Floors, World, Figures))).
+                                         World, Figures0))),
+    print_size(Figures0.put(_{in_process:InProcess, floors:Floors}), Figures).
 
-server_figures(C, Port, Pid, EchoPort, Params, Floors, World, Figures) :-
+server_figures(C, Port, Pid, EchoPort, Params, World, Figures) :-
     Size = World.size,
-    load_world(C, World, Load),
+    load_world(socket(C), World, Load),
     bench_memory(Pid, Loaded),
     progress("size ~D: loaded ~D statements, RSS ~w kB", [Size, Load.statements, Loaded.rss_kb]),
     echo_floors(EchoPort, Params, World, Echo),
@@ -211,8 +273,7 @@ server_figures(C, Port, Pid, EchoPort, Params, Floors, World, Figures) :-
     Figures = size{triples:Size, world:World.put(statements, Load.statements),
                    load:Load, memory_loaded:Loaded, memory_end:End,
                    echo:Echo, operations:Ops, concurrent:Concurrent,
-                   events:Events, rdf_assert_per_s:Floors.rdf_assert_per_s},
-    print_size(Figures).
+                   events:Events}.
 
 		 /*******************************
 		 *          THE WORLD           *
@@ -363,22 +424,25 @@ belief_object(W, A, K, I) :-
 		 *          LOADING             *
 		 *******************************/
 
-%   load_world(+Conn, +World, -Load): add the robot's world in batches
+%   load_world(+Via, +World, -Load): add the robot's world in batches
 %   of 100 (timing each request), wait for the agents' models, add the
-%   agents' beliefs with addForAgent in batches of 100.
+%   agents' beliefs to their models in batches of 100.  Via is
+%   socket(Conn) (add and addForAgent requests) or `in_process`
+%   (oro_add/2 in this process).
 
-load_world(C, W, load{statements:N, seconds:Seconds, per_s:Rate, batch:Batch,
-                      robot_statements:NRobot, robot_per_s:RobotRate,
-                      belief_statements:NBeliefs, belief_per_s:BeliefRate}) :-
-    progress("size ~D: loading ~D objects", [W.size, W.objects]),
-    load_robot(C, W, 1, [], RobotTimes0),
+load_world(Via, W, load{statements:N, seconds:Seconds, per_s:Rate, batch:Batch,
+                        robot_statements:NRobot, robot_per_s:RobotRate,
+                        belief_statements:NBeliefs, belief_per_s:BeliefRate}) :-
+    via_text(Via, Where),
+    progress("size ~D: loading ~D objects ~w", [W.size, W.objects, Where]),
+    load_robot(Via, W, 1, [], RobotTimes0),
     append(RobotTimes0, RobotTimes),
     pairs_keys_values(RobotTimes, RobotCounts, RobotMicros),
     sum_list(RobotCounts, NRobot),
     sum_list(RobotMicros, RobotSum),
-    wait_agents(C, W.agents, 60),
+    wait_agents(Via, W.agents, 60),
     numlist(1, W.agents, Agents),
-    maplist(load_beliefs(C, W), Agents, BeliefTimes0),
+    maplist(load_beliefs(Via, W), Agents, BeliefTimes0),
     append(BeliefTimes0, BeliefTimes),
     pairs_keys_values(BeliefTimes, BeliefCounts, BeliefMicros),
     sum_list(BeliefCounts, NBeliefs),
@@ -394,12 +458,15 @@ load_world(C, W, load{statements:N, seconds:Seconds, per_s:Rate, batch:Batch,
 
 full_batch(100-_).
 
-%   load_robot(+Conn, +World, +From, +Acc, -Times): the objects from
+via_text(socket(_), "over the socket").
+via_text(in_process, "in this process").
+
+%   load_robot(+Via, +World, +From, +Acc, -Times): the objects from
 %   From on, 2,500 at a time (the statements are made a block at a
 %   time, outside the timed requests).  Times are Count-Micros of each
 %   request, a list a block, in reverse order.
 
-load_robot(C, W, From, Acc, Times) :-
+load_robot(Via, W, From, Acc, Times) :-
     (   From > W.objects
     ->  Times = Acc
     ;   To is min(W.objects, From + 2499),
@@ -408,40 +475,48 @@ load_robot(C, W, From, Acc, Times) :-
                      member(S, Ss)
                    ), Statements),
         bench_batches(Statements, 100, Batches),
-        load_batches(C, Batches, BlockTimes),
+        maplist(load_batch(Via, myself), Batches, BlockTimes),
         (   (To // 2500) mod 40 =:= 0
         ->  progress("size ~D: ~D objects of ~D", [W.size, To, W.objects])
         ;   true
         ),
         Next is To + 1,
-        load_robot(C, W, Next, [BlockTimes|Acc], Times)
+        load_robot(Via, W, Next, [BlockTimes|Acc], Times)
     ).
 
-load_batches(C, Batches, Times) :-
-    maplist(load_batch(C), Batches, Times).
-
-load_batch(C, Batch, Count-Micros) :-
-    length(Batch, Count),
-    bench_time(bench_call(C, add, [Batch]), Micros).
-
-load_beliefs(C, W, A, Times) :-
+load_beliefs(Via, W, A, Times) :-
     belief_statements(W, A, Statements),
     bench_batches(Statements, 100, Batches),
     format(atom(Agent), 'human~d', [A]),
-    maplist(load_belief_batch(C, Agent), Batches, Times).
+    maplist(load_batch(Via, Agent), Batches, Times).
 
-load_belief_batch(C, Agent, Batch, Count-Micros) :-
+%   load_batch(+Via, +Model, +Batch, -Timed): add Batch to Model (the
+%   robot's, `myself`, or an agent's); Timed is Count-Micros.
+
+load_batch(Via, Model, Batch, Count-Micros) :-
     length(Batch, Count),
-    bench_time(bench_call(C, addForAgent, [Agent, Batch]), Micros).
+    bench_time(add_batch(Via, Model, Batch), Micros).
 
-%   wait_agents(+Conn, +N, +Seconds): poll listAgents until it lists
-%   human1 ... humanN (their models are created after the add that
-%   typed them has been answered).
+add_batch(socket(C), myself, Batch) :-
+    !,
+    bench_call(C, add, [Batch]).
+add_batch(socket(C), Agent, Batch) :-
+    bench_call(C, addForAgent, [Agent, Batch]).
+add_batch(in_process, Model, Batch) :-
+    oro_add(Model, Batch).
 
-wait_agents(C, N, Seconds) :-
+%   wait_agents(+Via, +N, +Seconds): over the socket, poll listAgents
+%   until it lists human1 ... humanN (their models are created after
+%   the add that typed them has been answered); in this process, wait
+%   until the changes made so far have been seen by the watcher that
+%   creates them (a name of an agent being created waits for it anyway).
+
+wait_agents(socket(C), N, Seconds) :-
     numlist(1, N, Is),
     maplist([I, A]>>format(atom(A), 'human~d', [I]), Is, Names),
     wait_listed(C, Names, Seconds).
+wait_agents(in_process, _, _) :-
+    oro_events_sync.
 
 wait_listed(C, Names, Seconds) :-
     get_time(Now),
@@ -517,21 +592,20 @@ echo_floors(EchoPort, Params, W, echo{one:One, batch:Batch}) :-
 		 *******************************/
 
 %   operations(+Conn, +Params, +World, +Echo, -Ops): each operation of
-%   op/8, in order, sampled with bench_measure/6; the first 5 samples
-%   (first use of an index, first compilation of a schema closure) are
-%   left out.
+%   op/9, in order, measured by measure/7.  What an operation's
+%   samples did is passed on to the later ones (Done, a dict): add 1
+%   records the statements it added, which remove then takes away.
 
 operations(C, Params, W, Echo, Ops) :-
-    findall(Key, op(Key, _, _, C, W, _, _, _), Keys),
-    maplist(operation(C, Params, W, Echo), Keys, Ops).
+    findall(Key, op(Key, _, _, C, W, _, _, _, _), Keys),
+    foldl(operation(C, Params, W, Echo), Keys, Ops, done{}, _).
 
-operation(C, Params, W, Echo, Key, Op) :-
-    once(op(Key, Label, FloorKey, C, W, I, Goal, Prepare)),
+operation(C, Params, W, Echo, Key, Op, Done0, Done) :-
+    once(op(Key, Label, FloorKey, C, W, Done0, I, Goal, Prepare)),
     progress("size ~D: ~w", [W.size, Label]),
-    N is Params.samples + 5,                % the first 5 warm up
-    bench_measure(N, Params.budget, I, Goal, Prepare, Times0),
-    warmed_up(Times0, Times),
-    bench_stats(Times, Stats),
+    op_samples(Key, Params, Done0, N),
+    measure(N, Params, I, Goal, Prepare, Samples, Stats),
+    recorded(Key, Samples, Done0, Done),
     Floor = Echo.FloorKey,
     Ratio is Stats.median / Floor.median,
     (   FloorKey == batch
@@ -541,6 +615,17 @@ operation(C, Params, W, Echo, Key, Op) :-
     Op = op{key:Key, label:Label, stats:Stats, floor:FloorKey,
             floor_median:Floor.median, ratio:Ratio, per_s:PerSecond}.
 
+%   measure(+N, +Params, ?I, :Goal, :Prepare, -Samples, -Stats): up to
+%   N samples of Goal within the budget (bench_measure/7, recording
+%   each sample's Goal as it ran); Stats leave out the first 5 (first
+%   use of an index, first compilation of a schema closure).
+
+measure(N, Params, I, Goal, Prepare, Samples, Stats) :-
+    bench_measure(N, Params.budget, I, Goal, Prepare, Goal, Samples),
+    pairs_values(Samples, Times0),
+    warmed_up(Times0, Times),
+    bench_stats(Times, Stats).
+
 warmed_up(Times0, Times) :-
     (   length(Warm, 5),
         append(Warm, Times, Times0),
@@ -549,70 +634,84 @@ warmed_up(Times0, Times) :-
     ;   Times = Times0
     ).
 
-%   op(?Key, ?Label, ?Floor, +Conn, +World, ?I, -Goal, -Prepare): an
-%   operation measured over the socket: sample I runs Prepare, then
-%   times Goal.  Floor is the echo figure it is compared with (`one`
-%   for a request of one statement, `batch` for 100).  The order
-%   matters: remove takes away what add 1 added.
+%   op_samples(+Key, +Params, +Done, -N): how many samples to take, the
+%   5 that warm up included; remove takes one for each statement add 1
+%   added.
 
-op(add_1, "add 1 statement", one, C, W, I,
+op_samples(remove, _, Done, N) :-
+    !,
+    length(Done.add_1, N).
+op_samples(_, Params, _, N) :-
+    N is Params.samples + 5.
+
+%   recorded(+Key, +Samples, +Done0, -Done): add 1 records the
+%   statements its requests added (each sample's Goal as it ran: only
+%   those answered `ok` are there).
+
+recorded(add_1, Samples, Done0, Done) :-
+    !,
+    findall(S, member(call_ok(_, add, [[S]])-_, Samples), Added),
+    Done = Done0.put(add_1, Added).
+recorded(_, _, Done, Done).
+
+%   op(?Key, ?Label, ?Floor, +Conn, +World, +Done, ?I, -Goal, -Prepare):
+%   an operation measured over the socket: sample I runs Prepare, then
+%   times Goal.  Floor is the echo figure it is compared with (`one`
+%   for a request of one statement, `batch` for 100).  Done is what the
+%   operations before it recorded (recorded/4): remove takes away the
+%   statements add 1 added, the Ith sample the Ith statement.
+
+op(add_1, "add 1 statement", one, C, W, _, I,
    call_ok(C, add, [[S]]),
    extra_statement(W, I, S)).
-op(add_100, "add a batch of 100", batch, C, W, I,
+op(add_100, "add a batch of 100", batch, C, W, _, I,
    call_ok(C, add, [B]),
    bulk_batch(W, I, B)).
-op(update, "update 1 (functional property)", one, C, W, I,
+op(update, "update 1 (functional property)", one, C, W, _, I,
    call_ok(C, update, [[S]]),
    update_statement(W, I, S)).
-op(remove, "remove 1 statement", one, C, W, I,
+op(remove, "remove 1 statement (one add 1 added)", one, C, _, Done, I,
    call_ok(C, remove, [[S]]),
-   extra_statement(W, I, S)).
-op(check_asserted, "check, asserted", one, C, W, I,
+   ( get_dict(add_1, Done, Added),
+     nth1(I, Added, S)
+   )).
+op(check_asserted, "check, asserted", one, C, W, _, I,
    expect(C, check, [[S]], true),
    asserted_statement(W, I, S)).
-op(check_type, "check, inferred type", one, C, W, I,
+op(check_type, "check, inferred type", one, C, W, _, I,
    expect(C, check, [[S]], true),
-   ( sample_object(W, I, J),
-     format(string(S), "obj~d rdf:type Artifact", [J])
-   )).
-op(check_property, "check, inferred property (isAt)", one, C, W, I,
+   inferred_type_statement(W, I, S)).
+op(check_property, "check, inferred property (isAt)", one, C, W, _, I,
    expect(C, check, [[S]], true),
-   ( sample_object(W, I, J),
-     placement(W, J, _, Target),
-     format(string(S), "obj~d isAt ~w", [J, Target])
-   )).
-op(find_1, "find, 1 pattern (inferred property)", one, C, W, I,
+   inferred_property_statement(W, I, S)).
+op(find_1, "find, 1 pattern (inferred property)", one, C, W, _, I,
    expect(C, find, ["o", [P]], nonempty),
-   ( sample_furniture(W, I, F),
-     format(string(P), "?o isAt furniture~d", [F])
-   )).
-op(find_2, "find, 2 patterns (+ inferred type)", one, C, W, I,
+   furniture_pattern(W, I, P)).
+op(find_2, "find, 2 patterns (+ inferred type)", one, C, W, _, I,
    expect(C, find, ["o", [P, "?o rdf:type Tableware"]], list),
-   ( sample_furniture(W, I, F),
-     format(string(P), "?o isAt furniture~d", [F])
-   )).
-op(find_3, "find, 3 patterns (room, furniture, type)", one, C, W, I,
+   furniture_pattern(W, I, P)).
+op(find_3, "find, 3 patterns (room, furniture, type)", one, C, W, _, I,
    expect(C, find, ["o", ["?o isAt ?f", P, "?o rdf:type Tableware"]], list),
    ( R is 1 + I mod W.rooms,
      format(string(P), "?f isIn room~d", [R])
    )).
-op(lookup_label, "lookup, a label", one, C, W, I,
+op(lookup_label, "lookup, a label", one, C, W, _, I,
    expect(C, lookup, [T], nonempty),
    ( Tables is max(1, W.furniture // 6),
      F is 6 * (1 + I mod Tables),
      format(string(T), "\"table ~d\"", [F])
    )).
-op(lookup_name, "lookup, a name", one, C, W, I,
+op(lookup_name, "lookup, a name", one, C, W, _, I,
    expect(C, lookup, [T], nonempty),
    ( sample_object(W, I, J),
      format(string(T), "obj~d", [J])
    )).
-op(get_infos, "getInfos", one, C, W, I,
+op(get_infos, "getInfos", one, C, W, _, I,
    expect(C, getInfos, [T], nonempty),
    ( sample_object(W, I, J),
      format(string(T), "obj~d", [J])
    )).
-op(find_for_agent, "findForAgent, 1 pattern (inferred)", one, C, W, I,
+op(find_for_agent, "findForAgent, 1 pattern (inferred)", one, C, W, _, I,
    expect(C, findForAgent, [Agent, "x", [P]], nonempty),
    ( A is 1 + I mod W.agents,
      format(atom(Agent), 'human~d', [A]),
@@ -620,7 +719,7 @@ op(find_for_agent, "findForAgent, 1 pattern (inferred)", one, C, W, I,
      belief_object(W, A, K, J),
      format(string(P), "obj~d isAt ?x", [J])
    )).
-op(add_for_agent, "addForAgent 1 statement", one, C, W, I,
+op(add_for_agent, "addForAgent 1 statement", one, C, W, _, I,
    call_ok(C, addForAgent, [Agent, [S]]),
    ( A is 1 + I mod W.agents,
      format(atom(Agent), 'human~d', [A]),
@@ -654,6 +753,19 @@ asserted_statement(W, I, S) :-
     placement(W, J, Property, Target),
     format(string(S), "obj~d ~w ~w", [J, Property, Target]).
 
+inferred_type_statement(W, I, S) :-
+    sample_object(W, I, J),
+    format(string(S), "obj~d rdf:type Artifact", [J]).
+
+inferred_property_statement(W, I, S) :-
+    sample_object(W, I, J),
+    placement(W, J, _, Target),
+    format(string(S), "obj~d isAt ~w", [J, Target]).
+
+furniture_pattern(W, I, P) :-
+    sample_furniture(W, I, F),
+    format(string(P), "?o isAt furniture~d", [F]).
+
 %   update: the opposite of the object's initial visibility.
 
 update_statement(W, I, S) :-
@@ -664,6 +776,67 @@ update_statement(W, I, S) :-
     ;   V = true
     ),
     format(string(S), "obj~d isVisible ~w", [J, V]).
+
+		 /*******************************
+		 *          IN PROCESS          *
+		 *******************************/
+
+%   in_process_figures(+Params, +Floors, +World, -InProcess): the world
+%   loaded in this process by library(oro) on a fresh store
+%   (oro_init/1 with the server's defaults), the robot's part and the
+%   agents' beliefs in batches of 100 as over the socket; then check
+%   and find as of in_process_op/6, the same samples as the socket's,
+%   each beside one bound rdf/3 probe (Floors.rdf_probe_us).  The store
+%   is emptied of the world afterwards (oro_reset/0).
+
+in_process_figures(Params, Floors, W, in_process{load:Load, operations:Ops,
+                                                  probe_us:ProbeMicros}) :-
+    oro_init([]),
+    load_world(in_process, W, Load),
+    ProbeMicros = Floors.rdf_probe_us,
+    findall(Key, in_process_op(Key, _, W, _, _, _), Keys),
+    maplist(in_process_operation(Params, W, ProbeMicros), Keys, Ops),
+    oro_reset.
+
+in_process_operation(Params, W, ProbeMicros, Key, Op) :-
+    once(in_process_op(Key, Label, W, I, Goal, Prepare)),
+    progress("size ~D: in process, ~w", [W.size, Label]),
+    N is Params.samples + 5,
+    measure(N, Params, I, Goal, Prepare, _, Stats),
+    Ratio is Stats.median / ProbeMicros,
+    PerSecond is 1.0e6 / Stats.median,
+    Op = op{key:Key, label:Label, stats:Stats, floor:rdf_probe,
+            floor_median:ProbeMicros, ratio:Ratio, per_s:PerSecond}.
+
+%   in_process_op(?Key, ?Label, +World, ?I, -Goal, -Prepare): as op/9,
+%   calling library(oro) in this process (the predicates the server's
+%   check and find call).  A wrong answer stops the run.
+
+in_process_op(check_asserted, "check, asserted", W, I,
+              in_process_check(S),
+              asserted_statement(W, I, S)).
+in_process_op(check_type, "check, inferred type", W, I,
+              in_process_check(S),
+              inferred_type_statement(W, I, S)).
+in_process_op(check_property, "check, inferred property (isAt)", W, I,
+              in_process_check(S),
+              inferred_property_statement(W, I, S)).
+in_process_op(find_1, "find, 1 pattern (inferred property)", W, I,
+              in_process_find(P),
+              furniture_pattern(W, I, P)).
+
+in_process_check(S) :-
+    (   oro_check(myself, [S])
+    ->  true
+    ;   throw(bench_wrong_answer(oro_check, [S], false))
+    ).
+
+in_process_find(P) :-
+    oro_find(myself, o, [P], Values),
+    (   Values \== []
+    ->  true
+    ;   throw(bench_wrong_answer(oro_find, [P], Values))
+    ).
 
 		 /*******************************
 		 *          CONCURRENCY         *
@@ -752,13 +925,11 @@ mix_request(W, K, I, Method, Params) :-
         Params = [[S]]
     ;   Case =:= 1
     ->  Method = check,
-        sample_object(W, J, O),
-        format(string(S), "obj~d rdf:type Artifact", [O]),
+        inferred_type_statement(W, J, S),
         Params = [[S]]
     ;   Case =:= 2
     ->  Method = find,
-        sample_furniture(W, J, F),
-        format(string(P), "?o isAt furniture~d", [F]),
+        furniture_pattern(W, J, P),
         Params = ["o", [P]]
     ;   Method = add,
         furniture_of(W, J, F),
@@ -866,12 +1037,12 @@ startup_figures(startup{runs:5, stats:Stats, memory:Memory, floor:Floor, ratio:R
     ms_text(Stats.median, Median),
     ms_text(Stats.max, Max),
     ms_text(Floor.median, FloorMedian),
-    format("~nStartup to listening (5 runs): median ~w, max ~w; \c
-            bare swipl -g halt ~w (~1fx); server RSS ~w kB~n",
-           [Median, Max, FloorMedian, Ratio, Memory.rss_kb]).
+    say("~nStartup to listening (5 runs): median ~w, max ~w; \c
+         bare swipl -g halt ~w (~1fx); server RSS ~w kB~n",
+        [Median, Max, FloorMedian, Ratio, Memory.rss_kb]).
 
 %   startup_time(+Args, -Micros, -Memory): start the server with Args,
-%   time until its listening line, read its memory, kill it.
+%   time until its listening line, read its memory, stop it.
 
 startup_time(Args, Micros, Memory) :-
     bench_server_script(Server),
@@ -888,8 +1059,7 @@ startup_time(Args, Micros, Memory) :-
           ),
           bench_memory(Pid, Memory)
         ),
-        ( catch(process_kill(Pid), _, true),
-          process_wait(Pid, _),
+        ( bench_stop_process(Pid),
           close(Out)
         )),
     Micros is (T1 - T0) * 1.0e6.
@@ -902,29 +1072,62 @@ bare_swipl :-
 		 *        TURTLE LOADING        *
 		 *******************************/
 
-%   turtle_figures(+Size, -Turtle): the robot's world of Size written as
-%   Turtle to a temporary file; the server's startup to listening with
-%   --ontology=FILE (one run), and rdf_load/2 of the file in this
-%   process (its floor).
+%   turtle_figures(+Size, -Turtle): a robot world of at least Size
+%   triples (turtle_world/2) written as Turtle to a temporary file; the
+%   server's startup to listening with --ontology=FILE (one run), and
+%   rdf_load/2 of the file in this process (its floor).  Triples is
+%   what rdf_load/2 loaded, Written what was written.
 
-turtle_figures(Size, turtle{size:Size, triples:Triples, bytes:Bytes,
-                            startup_s:Startup, load_s:Load, memory:Memory,
-                            floor_s:Floor, ratio:Ratio}) :-
-    world(Size, W),
-    progress("Turtle: writing the world of ~D triples", [Size]),
+turtle_figures(Size, turtle{size:Size, objects:Objects, written:Written,
+                            triples:Triples, bytes:Bytes, startup_s:Startup,
+                            load_s:Load, memory:Memory, floor_s:Floor,
+                            ratio:Ratio}) :-
+    turtle_world(Size, W),
+    Objects = W.objects,
+    progress("Turtle: writing a world of at least ~D triples (~D objects)",
+             [Size, W.objects]),
     setup_call_cleanup(
         tmp_file_stream(File, Stream, [extension(ttl), encoding(utf8)]),
-        write_turtle(Stream, W),
+        write_turtle(Stream, W, Written),
         close(Stream)),
     call_cleanup(turtle_load(File, Triples, Bytes, Startup, Memory, Floor),
                  delete_file(File)),
     startup_baseline(Baseline),
     Load is Startup - Baseline,
     Ratio is Load / Floor,
-    format("~nTurtle: ~D triples (~1f MB): server startup to listening \c
-            ~2f s (~2f s beyond a plain startup), RSS ~w kB; rdf_load/2 \c
-            in process ~2f s (~1fx)~n",
-           [Triples, Bytes / 1048576, Startup, Load, Memory.rss_kb, Floor, Ratio]).
+    say("~nTurtle: ~D triples (~1f MB): server startup to listening \c
+         ~2f s (~2f s beyond a plain startup), RSS ~w kB; rdf_load/2 \c
+         in process ~2f s (~1fx)~n",
+        [Triples, Bytes / 1048576, Startup, Load, Memory.rss_kb, Floor, Ratio]).
+
+%   turtle_world(+Size, -World): the robot's part of a world (objects,
+%   furniture, rooms, the agents' types) of at least Size triples.  A
+%   Turtle file has no agents' models: the agents' beliefs of world/2
+%   (2% of its triples) are made up for with more objects.
+
+turtle_world(Size, W) :-
+    world(Size, W0),
+    Objects0 is max(100, ceiling(Size / 4.16)),
+    turtle_world(Size, W0.put(beliefs, 0), Objects0, W).
+
+turtle_world(Size, W0, Objects, W) :-
+    NF is max(1, Objects // 20),
+    NR is (NF + 9) // 10,
+    W1 = W0.put(_{objects:Objects, furniture:NF, rooms:NR}),
+    robot_triples(W1, N),
+    (   N >= Size
+    ->  W = W1
+    ;   More is Objects + 1 + (Size - N) // 5,
+        turtle_world(Size, W0, More, W)
+    ).
+
+%   robot_triples(+World, -N): the triples of unit_statements/3 over
+%   all objects: 4 an object, 3 a piece of furniture, 2 a room, 2 an
+%   agent.
+
+robot_triples(W, N) :-
+    N is 4 * W.objects + 3 * W.furniture + 2 * W.rooms
+       + 2 * min(W.agents, W.objects).
 
 turtle_load(File, Triples, Bytes, Startup, Memory, Floor) :-
     size_file(File, Bytes),
@@ -946,13 +1149,19 @@ startup_baseline(Seconds) :-
     startup_time([], Micros, _),
     Seconds is Micros / 1.0e6.
 
-write_turtle(Out, W) :-
+%   write_turtle(+Out, +World, -Written): the robot's part of World
+%   (unit_statements/3 of every object) as Turtle; Written is the number
+%   of triples written.
+
+write_turtle(Out, W, Written) :-
     format(Out, "@prefix : <http://kb.openrobots.org#> .~n\c
                  @prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .~n~n", []),
-    forall(between(1, W.objects, I),
-           ( unit_statements(W, I, Statements),
-             forall(member(S, Statements), turtle_triple(Out, S))
-           )).
+    aggregate_all(count,
+                  ( between(1, W.objects, I),
+                    unit_statements(W, I, Statements),
+                    member(S, Statements),
+                    turtle_triple(Out, S)
+                  ), Written).
 
 %   turtle_triple(+Out, +Statement): one of the world's statements
 %   (subject, predicate, object separated by single spaces; the object
@@ -991,29 +1200,48 @@ turtle_object(O, TO) :-
 		 *            REPLAY            *
 		 *******************************/
 
-%   replay_figures(+Log, -Replay): the recorded robot session replayed
-%   on a fresh server started with the experiment's robot id, its human
-%   partner declared first (as the experiment's scenario ontology did):
-%   every request, each client thread on its own connection (opened
-%   beforehand), in log order, one at a time, no sleeps.  Total time
-%   and each request's round trip; the events pushed meanwhile are read
-%   and counted.
+%   replay_figures(+Log, +EchoPort, +Params, -Replay): the recorded
+%   robot session replayed on a fresh server started with the
+%   experiment's robot id, its human partner declared first (as the
+%   experiment's scenario ontology did): every request, each client
+%   thread on its own connection (opened beforehand), in log order,
+%   one at a time, no sleeps.  Total time and each request's round
+%   trip; the events pushed meanwhile are read and counted.  Its floor,
+%   measured right before: as many echo round trips (1 statement) as
+%   requests were sent.
 
-replay_figures(Log, Replay) :-
+replay_figures(Log, EchoPort, Params, Replay) :-
     (   exists_file(Log)
     ->  progress("replay of ~w", [Log]),
         bench_log_requests(Log, Requests),
+        echo_round_trip(EchoPort, Params, Echo),
         bench_with_server(['--robot-id=JIDOKUKA_ROBOT'], Port, _,
                           bench_with_connection(
                               Port, C,
                               ( call_ok(C, add, [["ACHILE_HUMAN1 rdf:type Human"]]),
                                 wait_listed(C, ['ACHILE_HUMAN1'], 30),
-                                replay(Port, Requests, Replay)
+                                replay(Port, Requests, Replay0)
                               ))),
+        FloorSeconds is Replay0.requests * Echo.median / 1.0e6,
+        Ratio is Replay0.seconds / FloorSeconds,
+        MedianRatio is Replay0.stats.median / Echo.median,
+        Replay = Replay0.put(_{echo:Echo, floor_s:FloorSeconds, ratio:Ratio,
+                               median_ratio:MedianRatio}),
         print_replay(Replay)
     ;   format(user_error, "Notice: ~w not found: replay skipped.~n", [Log]),
         Replay = null
     ).
+
+%   echo_round_trip(+EchoPort, +Params, -Stats): the echo server's round
+%   trip for a one-statement request.
+
+echo_round_trip(EchoPort, Params, Stats) :-
+    bench_with_connection(
+        EchoPort, E,
+        bench_measure(Params.samples, Params.budget, _,
+                      bench_call(E, check, [["ACHILE_HUMAN1 rdf:type Human"]], "true"),
+                      true, Times)),
+    bench_stats(Times, Stats).
 
 replay(Port, Requests, replay{requests:N, connections:NConn, seconds:Seconds,
                               stats:Stats, ok:NOk, errors:Errors,
@@ -1066,79 +1294,147 @@ print_replay(R) :-
     us_text(R.stats.median, Median),
     us_text(R.stats.p99, P99),
     us_text(R.stats.max, Max),
-    format("~nReplay of the 2011 robot session: ~d requests on ~d connections \c
-            in ~3f s; per request median ~w, p99 ~w, max ~w; ~d ok, \c
-            ~d unanswered, ~d unparsed, ~d events read~n",
-           [R.requests, R.connections, R.seconds, Median, P99, Max, R.ok,
-            R.unanswered, R.unparsed, R.events]),
+    us_text(R.echo.median, Echo),
+    say("~nReplay of the 2011 robot session: ~d requests on ~d connections \c
+         in ~3f s, ~1fx its floor (~d x the echo round trip of ~w = ~3f s); \c
+         per request median ~w (~1fx echo), p99 ~w, max ~w; ~d ok, \c
+         ~d unanswered, ~d unparsed, ~d events read~n",
+        [R.requests, R.connections, R.seconds, R.ratio, R.requests, Echo,
+         R.floor_s, Median, R.median_ratio, P99, Max, R.ok, R.unanswered,
+         R.unparsed, R.events]),
     forall(member(E, R.errors),
-           format("   error ~w: ~d~n", [E.exception, E.count])).
+           say("   error ~w: ~d~n", [E.exception, E.count])).
 
 		 /*******************************
 		 *            REPORT            *
 		 *******************************/
 
-print_size(S) :-
-    format("~n== ~D asserted triples (~D sent: ~D objects, ~D pieces of \c
-            furniture, ~D rooms, ~d agents with ~D beliefs) ==~n",
-           [S.triples, S.load.statements, S.world.objects, S.world.furniture,
-            S.world.rooms, S.world.agents, S.load.belief_statements]),
-    format("server memory: VmRSS ~w kB after the load, VmHWM ~w kB at the end~n~n",
-           [S.memory_loaded.rss_kb, S.memory_end.hwm_kb]),
+%   print_size(+Figures0, -Figures): print a size's table; Figures is
+%   Figures0 with the rows printed (`table`, see table_rows/2).
+
+print_size(S, Figures) :-
+    say("~n== ~D asserted triples (~D sent: ~D objects, ~D pieces of \c
+         furniture, ~D rooms, ~d agents with ~D beliefs) ==~n",
+        [S.triples, S.load.statements, S.world.objects, S.world.furniture,
+         S.world.rooms, S.world.agents, S.load.belief_statements]),
+    say("server memory: VmRSS ~w kB after the load, VmHWM ~w kB at the end~n~n",
+        [S.memory_loaded.rss_kb, S.memory_end.hwm_kb]),
+    table_rows(S, Rows),
     row(operation, median, p99, max, 'x floor', 'per second'),
-    stats_row('echo round trip, 1 statement (floor)', S.echo.one, -, -),
-    stats_row('echo round trip, 100 statements (floor)', S.echo.batch, -, -),
-    Floor = S.rdf_assert_per_s,
-    rate_row('bulk add, world load (x rdf_assert)', S.load.robot_per_s, Floor),
-    rate_row('addForAgent, the beliefs (x rdf_assert)', S.load.belief_per_s, Floor),
-    stats_row('  a batch of 100 of the load (x echo)', S.load.batch,
-              S.echo.batch.median, -),
-    forall(member(Op, S.operations),
-           stats_row(Op.label, Op.stats, Op.floor_median, Op.per_s)),
+    maplist(print_row, Rows),
+    Figures = S.put(table, Rows).
+
+%   table_rows(+Figures, -Rows): the rows of a size's table, each a dict
+%   row{label, median_us, p99_us, max_us, floor, floor_us, ratio, per_s,
+%   note}: times in microseconds, `floor` the name of the floor the
+%   ratio is taken to (floor_us its time, if it is one), `null` where
+%   there is nothing.
+
+table_rows(S, Rows) :-
+    Echo1 = S.echo.one.median,
+    Echo100 = S.echo.batch.median,
+    Assert = S.floors.rdf_assert_per_s,
+    In = S.in_process,
     C = S.concurrent,
-    stats_row('8 clients, mixed requests', C.server.stats,
-              C.echo.stats.median, C.server.per_s),
-    stats_row('8 clients against echo (floor)', C.echo.stats, -, C.echo.per_s),
     E = S.events,
-    event_row('event, 1000 watchers on its predicate', E.same, S.echo.one.median),
-    event_row('event, 1000 watchers elsewhere', E.other, S.echo.one.median),
-    flush_output.
+    findall(Row, ( member(Op, S.operations),
+                   stats_row(Op.label, Op.stats, Op.floor, Op.floor_median,
+                             Op.per_s, Row)
+                 ), OpRows),
+    findall(Row, ( member(Op, In.operations),
+                   format(string(Label), "in process: ~w (x rdf/3)", [Op.label]),
+                   stats_row(Label, Op.stats, rdf_probe, Op.floor_median,
+                             Op.per_s, Row)
+                 ), InRows),
+    stats_row('echo round trip, 1 statement (floor)', S.echo.one,
+              null, null, null, EchoRow1),
+    stats_row('echo round trip, 100 statements (floor)', S.echo.batch,
+              null, null, null, EchoRow100),
+    probe_row(S.floors, ProbeRow),
+    rate_row('bulk add, world load (x rdf_assert)', S.load.robot_per_s,
+             Assert, LoadRow),
+    rate_row('addForAgent, the beliefs (x rdf_assert)', S.load.belief_per_s,
+             Assert, BeliefRow),
+    stats_row('  a batch of 100 of the load (x echo)', S.load.batch,
+              batch, Echo100, null, BatchRow),
+    rate_row('in process: bulk add, world load (x rdf_assert)',
+             In.load.robot_per_s, Assert, InLoadRow),
+    rate_row('in process: beliefs (x rdf_assert)', In.load.belief_per_s,
+             Assert, InBeliefRow),
+    stats_row('8 clients, mixed requests', C.server.stats,
+              echo_8_clients, C.echo.stats.median, C.server.per_s, ClientsRow),
+    stats_row('8 clients against echo (floor)', C.echo.stats,
+              null, null, C.echo.per_s, EchoClientsRow),
+    event_row('event, 1000 watchers on its predicate', E.same, Echo1, SameRow),
+    event_row('event, 1000 watchers elsewhere', E.other, Echo1, OtherRow),
+    append([ [EchoRow1, EchoRow100, ProbeRow, LoadRow, BeliefRow, BatchRow],
+             OpRows,
+             [InLoadRow, InBeliefRow],
+             InRows,
+             [ClientsRow, EchoClientsRow, SameRow, OtherRow]
+           ], Rows).
+
+stats_row(Label0, Stats, Floor, FloorMicros, PerSecond,
+          row{label:Label, median_us:M, p99_us:P, max_us:X, floor:Floor,
+              floor_us:FloorMicros, ratio:Ratio, per_s:PerSecond, note:null}) :-
+    text_to_string(Label0, Label),
+    json_number(Stats.median, M),
+    json_number(Stats.p99, P),
+    json_number(Stats.max, X),
+    (   number(FloorMicros),
+        number(M)
+    ->  Ratio is M / FloorMicros
+    ;   Ratio = null
+    ).
+
+probe_row(Floors, row{label:"bound rdf/3 probe, in process (floor)",
+                      median_us:Floors.rdf_probe_us, p99_us:null, max_us:null,
+                      floor:null, floor_us:null, ratio:null,
+                      per_s:Floors.rdf_probe_per_s, note:null}).
+
+%   rate_row: a rate against the floor's rate, as a ratio larger than 1
+%   when it is slower.
+
+rate_row(Label0, Rate, FloorRate,
+         row{label:Label, median_us:null, p99_us:null, max_us:null,
+             floor:rdf_assert, floor_us:null, ratio:Ratio, per_s:Rate,
+             note:null}) :-
+    text_to_string(Label0, Label),
+    Ratio is FloorRate / Rate.
+
+event_row(Label0, Result, EchoMedian, Row) :-
+    stats_row(Label0, Result.latency, one, EchoMedian, null, Row0),
+    format(string(Missed), "~d missed", [Result.missed]),
+    Row = Row0.put(note, Missed).
+
+json_number(X, Y) :-
+    (   number(X)
+    ->  Y = X
+    ;   Y = null
+    ).
+
+%   print_row(+Row): a row of table_rows/2 as a line of the table.
+
+print_row(R) :-
+    us_text(R.median_us, M),
+    us_text(R.p99_us, P),
+    us_text(R.max_us, X),
+    (   number(R.ratio)
+    ->  ratio_text(R.ratio, Ratio)
+    ;   Ratio = "-"
+    ),
+    (   string(R.note)
+    ->  PS = R.note
+    ;   count_text(R.per_s, PS)
+    ),
+    row(R.label, M, P, X, Ratio, PS).
 
 %   row(+Label, +Median, +P99, +Max, +Ratio, +PerSecond): one line of the
 %   table, the cells already texts.
 
 row(Label, Median, P99, Max, Ratio, PerSecond) :-
-    format("~w~t~46|~w~t~11+~w~t~11+~w~t~11+~w~t~9+~w~n",
-           [Label, Median, P99, Max, Ratio, PerSecond]).
-
-stats_row(Label, Stats, FloorMedian, PerSecond) :-
-    us_text(Stats.median, M),
-    us_text(Stats.p99, P),
-    us_text(Stats.max, X),
-    (   number(FloorMedian),
-        number(Stats.median)
-    ->  ratio_text(Stats.median / FloorMedian, R)
-    ;   R = "-"
-    ),
-    count_text(PerSecond, PS),
-    row(Label, M, P, X, R, PS).
-
-rate_row(Label, Rate, FloorRate) :-
-    ratio_text(FloorRate / Rate, R),
-    count_text(Rate, PS),
-    row(Label, -, -, -, R, PS).
-
-event_row(Label, Result, EchoMedian) :-
-    Stats = Result.latency,
-    us_text(Stats.median, M),
-    us_text(Stats.p99, P),
-    us_text(Stats.max, X),
-    (   number(Stats.median)
-    ->  ratio_text(Stats.median / EchoMedian, R)
-    ;   R = "-"
-    ),
-    format(string(Missed), "~d missed", [Result.missed]),
-    row(Label, M, P, X, R, Missed).
+    say("~w~t~58|~w~t~11+~w~t~11+~w~t~11+~w~t~9+~w~n",
+        [Label, Median, P99, Max, Ratio, PerSecond]).
 
 us_text(X, Text) :-
     bench_micros(X, Text, [units(auto)]).
@@ -1173,11 +1469,11 @@ scaling(PerSize, Scaling) :-
         Large.triples > 100000
     ->  findall(R, scaling_row(Base, Large, R), Rows),
         Scaling = scaling{from:100000, to:Large.triples, rows:Rows},
-        format("~nScaling: ~D against 100,000 triples (slower by)~n",
-               [Large.triples]),
+        say("~nScaling: ~D against 100,000 triples (slower by)~n",
+            [Large.triples]),
         forall(member(R, Rows),
                ( ratio_text(R.ratio, T),
-                 format("   ~w~t~46|~w~n", [R.label, T])
+                 say("   ~w~t~58|~w~n", [R.label, T])
                ))
     ;   Scaling = null
     ).
@@ -1205,8 +1501,10 @@ scaling_row(Base, Large, row{key:concurrent, label:"8 clients (throughput)", rat
 
 %   targets(+PerSize, +Startup, +Turtle, +Replay, +Scaling, -Targets):
 %   the targets of the issue, each with the figure measured and whether
-%   it is met (true, false, or null when not measured in this run).
-%   Socket figures at 100,000 triples (else the largest size measured).
+%   it is met (pass: true, false, or null when not measured in this
+%   run; verdict: `PASS`, `MISS` or `not measured`, and the same for the
+%   aim where there is one).  Socket figures at 100,000 triples (else
+%   the largest size measured).
 
 targets(PerSize, Startup, Turtle, Replay, Scaling, Targets) :-
     (   member(Ref, PerSize),
@@ -1214,26 +1512,32 @@ targets(PerSize, Startup, Turtle, Replay, Scaling, Targets) :-
     ->  true
     ;   last(PerSize, Ref)
     ),
-    findall(T, target(Ref, PerSize, Startup, Turtle, Replay, Scaling, T), Targets),
-    format("~nTargets (socket figures at ~D triples; medians unless said)~n",
-           [Ref.triples]),
+    findall(T, target(Ref, PerSize, Startup, Turtle, Replay, Scaling, T), Targets0),
+    maplist(with_verdict, Targets0, Targets),
+    say("~nTargets (socket figures at ~D triples; medians unless said)~n",
+        [Ref.triples]),
     forall(member(T, Targets),
-           ( verdict(T.pass, V0),
-             (   get_dict(aim, T, Aim)
-             ->  verdict(Aim, AimV),
-                 format(string(V), "~w (aim: ~w)", [V0, AimV])
-             ;   V = V0
-             ),
-             format("   ~w~t~72|~w~t~24+~w~n", [T.target, T.figure, V])
+           (   get_dict(aim_verdict, T, AimV)
+           ->  say("   ~w~t~76|~w~t~30+~w (aim: ~w)~n",
+                   [T.target, T.figure, T.verdict, AimV])
+           ;   say("   ~w~t~76|~w~t~30+~w~n", [T.target, T.figure, T.verdict])
            )).
 
-verdict(true, 'PASS').
-verdict(false, 'MISS').
-verdict(null, 'not measured').
+with_verdict(T0, T) :-
+    verdict(T0.pass, V),
+    (   get_dict(aim, T0, Aim)
+    ->  verdict(Aim, AimV),
+        T = T0.put(_{verdict:V, aim_verdict:AimV})
+    ;   T = T0.put(verdict, V)
+    ).
+
+verdict(true, "PASS").
+verdict(false, "MISS").
+verdict(null, "not measured").
 
 target(Ref, _, _, _, _, _, target{target:Target, figure:Figure, pass:Pass, aim:Aim}) :-
-    member(Key, [check_asserted, check_type, check_property, find_1, add_1,
-                 lookup_label, lookup_name]),
+    member(Key, [check_asserted, check_type, check_property, find_1, find_2,
+                 find_3, add_1, lookup_label, lookup_name]),
     member(Op, Ref.operations),
     Op.key == Key,
     format(string(Target), "~w: within 3x echo (aim < 100 us)", [Op.label]),
@@ -1268,10 +1572,10 @@ target(_, _, Startup, _, _, _, target{target:"startup to listening, bundled onto
     bool(Startup.stats.median < 500000, Pass).
 target(_, _, _, Turtle, _, _, target{target:"loading 1M triples of Turtle: < 10 s",
                                      figure:Figure, pass:Pass}) :-
-    (   Turtle.size >= 1000000
+    (   Turtle.triples >= 1000000
     ->  format(string(Figure), "~2f s to listening", [Turtle.startup_s]),
         bool(Turtle.startup_s < 10, Pass)
-    ;   format(string(Figure), "(largest size ~D)", [Turtle.size]),
+    ;   format(string(Figure), "(only ~D triples loaded)", [Turtle.triples]),
         Pass = null
     ).
 target(_, PerSize, _, _, _, _, target{target:"RSS at 1M asserted triples: < 1 GiB",
@@ -1289,7 +1593,7 @@ target(_, _, _, _, Replay, _, target{target:"robot session replay: < 1 s in tota
     (   Replay == null
     ->  Figure = "(no log)",
         Pass = null
-    ;   format(string(Figure), "~3f s", [Replay.seconds]),
+    ;   format(string(Figure), "~3f s = ~1fx floor", [Replay.seconds, Replay.ratio]),
         bool(Replay.seconds < 1, Pass)
     ).
 target(_, _, _, _, _, Scaling, target{target:Target, figure:Figure, pass:Pass}) :-
