@@ -316,16 +316,13 @@ update_triples(Model, Triples) :-
 %   True if every pattern holds in the inference closure of Model.  A
 %   complete statement must be entailed; a partial one must have a
 %   solution.  Patterns do not share variables.
-%
-%   @error resource_error(oro_query_time_limit(Seconds)) past the
-%          `oro_query:time_limit` setting.
 
 oro_check(Model0, Patterns) :-
     oro_resolve_model(Model0, Model),
     must_be(list, Patterns),
     maplist(pattern_triple, Patterns, Triples),
-    oro_with_time_limit(forall(member(Triple, Triples),
-                               oro_pattern_holds(Model, Triple))).
+    forall(member(Triple, Triples),
+           oro_pattern_holds(Model, Triple)).
 
 %!  oro_find(+Model, ?Var, +Patterns, -Values) is det.
 %
@@ -338,7 +335,8 @@ oro_check(Model0, Patterns) :-
 %
 %   @error domain_error(oro_variable, '') for an empty variable name.
 %   @error resource_error(oro_query_time_limit(Seconds)) past the
-%          `oro_query:time_limit` setting.
+%          `oro_query:time_limit` setting, for a join of two patterns
+%          or more.
 
 oro_find(Model0, Var, Patterns, Values) :-
     oro_resolve_model(Model0, Model),
