@@ -668,7 +668,7 @@ test(find_filter_time_limit, [true(Outcome-Other == stopped-ok("true"))]) :-
               Outcome, Other).
 
 %   find without filters joins two unbound patterns (seconds of work):
-%   plain find and check are limited like SPARQL queries.
+%   a plain find of several patterns is limited like SPARQL queries.
 
 test(find_time_limit, [true(Outcome-Other == stopped-ok("true"))]) :-
     exh_grow_store,

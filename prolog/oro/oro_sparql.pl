@@ -100,8 +100,8 @@ Evaluation:
     keep their bottom-up meaning.  Without ORDER BY or aggregates,
     solutions stream: LIMIT and ASK stop the evaluation early.
   - A query, its parsing included, is bounded by the setting
-    `oro_query:time_limit` (seconds, default 5; 0 for none), as find
-    and check are: past it, evaluation stops with
+    `oro_query:time_limit` (seconds, default 5; 0 for none), as finds
+    of several patterns are: past it, evaluation stops with
     `error(resource_error(oro_query_time_limit(Seconds)), _)`.  Queries
     run in the caller's thread (a server worker), so other clients are
     not held up.
