@@ -15,6 +15,9 @@
 :- use_module(library(apply)).
 :- use_module(library(socket)).
 :- use_module(library(yall)).
+:- use_module(library(oro), [oro_init/1]).
+:- use_module('../server/oro_server',
+              [oro_server_start/2, oro_server_port/2, oro_server_shutdown/1]).
 
 %   limits_with(+Setting, +Value, :Goal): run Goal with the server
 %   setting oro_server:Setting at Value.
@@ -123,3 +126,65 @@ limits_flood(Out, Gone) :-
           Gone = true).
 
 :- end_tests(limits_timeouts).
+
+
+                 /*******************************
+                 *          SHUTDOWN            *
+                 *******************************/
+
+%   oro_server_shutdown/1 (what SIGTERM and SIGINT run) in this process:
+%   once it returns, the connections' mutexes are free -- a connection
+%   whose event delivery thread waits for its mutex must be able to end,
+%   or halt/1 waits for it forever -- and a connection left open is not
+%   served any more: its next request closes it.
+
+limits_mutex_free(Mutex) :-
+    thread_create(( mutex_trylock(Mutex)
+                  ->  mutex_unlock(Mutex)
+                  ;   fail
+                  ),
+                  T, []),
+    thread_join(T, Status),
+    Status == true.
+
+limits_connection_mutexes(Mutexes) :-
+    findall(M, oro_server:connection(M), Mutexes).
+
+:- begin_tests(limits_shutdown).
+
+test(connections_released_and_closed,
+     [ true(Got == [2, true, ok("")]-end_of_file) ]) :-
+    test_server_stop,
+    test_fixture('testsuite.ttl', File),
+    oro_server_start([ port(0), host('127.0.0.1'), commonsense(false),
+                       ontology(File)
+                     ], Server),
+    oro_server_port(Server, Port),
+    oro_connect(Port, A),
+    oro_connect(Port, B),
+    call_cleanup(
+        ( oro_call(A, registerEvent,
+                   ["NEW_INSTANCE", "ON_TRUE", "x", "[?x rdf:type Monkey]"],
+                   ok(_)),
+          oro_call(B, add, ["[kong rdf:type Monkey]"], Added),
+          test_wait_until(( limits_connection_mutexes(Ms0),
+                            length(Ms0, 2)
+                          ), 10),
+          oro_server_shutdown(Server),
+          limits_connection_mutexes(Ms),
+          length(Ms, N),
+          test_bool(maplist(limits_mutex_free, Ms), Free),
+          oro_send(B, check, ["[kong rdf:type Monkey]"]),
+          oro_drain(B, Replies, 10),
+          (   memberchk(end_of_file, Replies)
+          ->  After = end_of_file
+          ;   After = Replies
+          ),
+          Got = [N, Free, Added]-After
+        ),
+        ( oro_disconnect(A),
+          oro_disconnect(B),
+          oro_init([])
+        )).
+
+:- end_tests(limits_shutdown).
