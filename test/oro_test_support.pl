@@ -29,10 +29,13 @@
             test_set_call/3,            % +Method, +Params, -Set
             test_map/2,                 % +Reply, -Pairs
             test_cli_server/4,          % +Args, -Port, :Goal, -Stderr
-            test_log_request/2          % +Line, -Request
+            test_log_request/2,         % +Line, -Request
+            test_diff/4,                % +Expected, +Actual, +Max, -Diff
+            test_first/3                % +N, +List, -First
           ]).
 :- reexport(oro_test_client).
 :- use_module(library(lists)).
+:- use_module(library(ordsets)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
 :- use_module(library(readutil)).
@@ -528,3 +531,31 @@ param_line(Arg, Line) :-
     with_output_to(string(Line),
                    json_write(current_output, Arg, [width(0)])),
     \+ sub_string(Line, _, _, _, "\n").
+
+
+%!  test_diff(+Expected, +Actual, +Max, -Diff) is det.
+%
+%   Diff is diff(NMissing, SomeMissing, NExtra, SomeExtra) between two
+%   ordered sets: how many elements of Expected are not in Actual and
+%   how many of Actual are not in Expected, with at most Max of each
+%   listed.  diff(0, [], 0, []) when they are equal.
+
+test_diff(Expected, Actual, Max, diff(NM, SomeM, NE, SomeE)) :-
+    ord_subtract(Expected, Actual, Missing),
+    ord_subtract(Actual, Expected, Extra),
+    length(Missing, NM),
+    length(Extra, NE),
+    test_first(Max, Missing, SomeM),
+    test_first(Max, Extra, SomeE).
+
+%!  test_first(+N, +List, -First) is det.
+%
+%   First is List, or its first N elements if it has more.
+
+test_first(N, List, First) :-
+    length(List, Len),
+    (   Len =< N
+    ->  First = List
+    ;   length(First, N),
+        append(First, _, List)
+    ).

@@ -112,21 +112,8 @@ fuzz_xsd(Type, IRI) :-
 %   diff(NMissing, SomeMissing, NExtra, SomeExtra), at most 10 of each
 %   listed.
 
-fuzz_diff(Expected, Actual, diff(NM, SomeM, NE, SomeE)) :-
-    ord_subtract(Expected, Actual, Missing),
-    ord_subtract(Actual, Expected, Extra),
-    length(Missing, NM),
-    length(Extra, NE),
-    fuzz_first(10, Missing, SomeM),
-    fuzz_first(10, Extra, SomeE).
-
-fuzz_first(N, List, First) :-
-    length(List, Len),
-    (   Len =< N
-    ->  First = List
-    ;   length(First, N),
-        append(First, _, List)
-    ).
+fuzz_diff(Expected, Actual, Diff) :-
+    test_diff(Expected, Actual, 10, Diff).
 
 
                  /*******************************
@@ -834,7 +821,7 @@ fuzz_session(Port, C, Quota, Live, Problems, Sent) :-
     append(Active, Settled, Live),
     oro_disconnect(Conn),
     reverse(Problems0, Problems1),
-    fuzz_first(20, Problems1, Problems).
+    test_first(20, Problems1, Problems).
 
 %   The state of a client between batches:
 %   s(Conn, N, pool(Active, Settled), Removed, Seq, Sent, Problems), N
@@ -957,7 +944,7 @@ fuzz_effect(add(Statements), pool(A0, S), pool(A, S), R, R) :-
 fuzz_effect(remove(Statements), pool(A0, S), pool(A, S), R0, R) :-
     subtract(A0, Statements, A),
     append(Statements, R0, R1),
-    fuzz_first(200, R1, R).
+    test_first(200, R1, R).
 
 %   fuzz_expect(+Expect, +Port, +Conn0, -Conn, -Outcome): read what
 %   Expect says; Outcome is `ok` or a problem term.  Conn is Conn0, or a
@@ -1065,7 +1052,7 @@ fuzz_result(Queue, Deadline, Result) :-
     ).
 
 fuzz_problems(result(C, _, Problems, _), C-First) :-
-    fuzz_first(5, Problems, First).
+    test_first(5, Problems, First).
 
 fuzz_sent(result(_, _, _, Sent), Sent).
 

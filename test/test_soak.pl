@@ -392,21 +392,8 @@ soak_threads(N) :-
                   ),
                   N).
 
-soak_diff(Expected, Actual, diff(NM, SomeM, NE, SomeE)) :-
-    ord_subtract(Expected, Actual, Missing),
-    ord_subtract(Actual, Expected, Extra),
-    length(Missing, NM),
-    length(Extra, NE),
-    soak_first(5, Missing, SomeM),
-    soak_first(5, Extra, SomeE).
-
-soak_first(N, List, First) :-
-    length(List, Len),
-    (   Len =< N
-    ->  First = List
-    ;   length(First, N),
-        append(First, _, List)
-    ).
+soak_diff(Expected, Actual, Diff) :-
+    test_diff(Expected, Actual, 5, Diff).
 
 :- begin_tests(soak, [ setup(test_server_start_testsuite),
                        cleanup(test_server_stop)
