@@ -570,9 +570,9 @@ oro_scratch_graph(Graph) :-
 %   rdf_db has no index on local names, and scanning its resources
 %   costs 30 ms at 10k triples, 350 ms at 1M (bench/bench_full.pl,
 %   lookup).  The index is kept by the write path itself (a hash
-%   lookup per IRI; an rdf_monitor/2 callback would cost 3 us a
-%   triple), and by a scan of what rdf_load/2 and a restored database
-%   bring.  An IRI whose last triple a write removed leaves the index
+%   lookup per IRI, where an rdf_monitor/2 callback would add a call
+%   from C per triple), and by a scan of what rdf_load/2 and a
+%   restored database bring.  An IRI whose last triple a write removed leaves the index
 %   once the write is committed, so names that come and go do not pile
 %   up (a write rolled back keeps its IRIs).
 
