@@ -82,6 +82,9 @@
             oro_revise/2,               % +Statements, +Policy
             oro_memory_deadlines/2,     % +Model, -Deadlines
             oro_memory_sync/0,
+            % concurrency and memory of the store
+            oro_store_read/1,           % :Goal
+            oro_store_rebuild/0,
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text
@@ -102,6 +105,7 @@
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).
 :- use_module(oro/oro_lookup).
+:- use_module(oro/oro_store, [oro_store_read/1, oro_store_rebuild/0]).
 
 /** <module> oro: a knowledge server for cognitive robots
 

@@ -78,6 +78,7 @@ opt_type(time_base, time_base, nonneg).
 opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
+opt_type(rebuild_garbage, rebuild_garbage, nonneg).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -96,6 +97,11 @@ Options:
   --db=DIR           Journal the models in DIR (created if needed) and
                      restore them from it on start: nothing acknowledged
                      is lost, even on kill -9
+  --rebuild-garbage=N
+                     Rebuild the store once rdf_db holds N names (IRIs)
+                     more than after the last rebuild, or twice as many,
+                     to give back the memory of names no fact uses any
+                     more (default 1000000; 0: never)
   -h, --help         Show this help
 ").
 
@@ -161,7 +167,9 @@ loopback(Host) :-
 %   (repeatable), commonsense(Bool), robot_id(Id), time_base(MS),
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
-%   oro_init/1).  Server is an opaque handle.
+%   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
+%   oro_store_rebuild/0; every request runs in oro_store_read/1).
+%   Server is an opaque handle.
 
 oro_server_start(Options, Server) :-
     must_be(list, Options),
@@ -172,6 +180,8 @@ oro_server_start(Options, Server) :-
     option(save_dir(SaveDir), Options, '.'),
     option(time_base(TimeBase), Options, 1000),
     option(db(Db), Options, ''),
+    option(rebuild_garbage(Garbage), Options, 1000000),
+    must_be(nonneg, Garbage),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                commonsense(CommonSense),
@@ -180,6 +190,7 @@ oro_server_start(Options, Server) :-
                save_dir(SaveDir),
                time_base(TimeBase)
              ]),
+    set_setting(oro_store:rebuild_garbage, Garbage),
     findall(P, member(plugin(P), Options), Plugins),
     oro_load_plugins(Plugins),
     tcp_socket(Socket),
@@ -431,7 +442,7 @@ handle_request(request(Method, Params), Context, Out) :-
     with_mutex(Context.mutex,
                (   closed_connection(Context.mutex)
                ->  fail                     % the server is shutting down
-               ;   oro_dispatch(Context, Method, Params, Reply),
+               ;   oro_store_read(oro_dispatch(Context, Method, Params, Reply)),
                    (   Reply = ok(Value)
                    ->  oro_write_ok(Out, Value)
                    ;   Reply = error(Name, Message),

@@ -559,11 +559,35 @@ ensure_log_monitor :-
     (   log_monitor_started
     ->  true
     ;   flag(oro_consistency_log_from, _, -1),
-        rdf_monitor(oro_consistency:log_monitor,
-                    [ -all, +assert, +retract, +update, +transaction,
-                      +load, +reset
-                    ]),
+        log_monitor_mask(Mask),
+        rdf_monitor(oro_consistency:log_monitor, Mask),
         assertz(log_monitor_started)
+    ).
+
+log_monitor_mask([ -all, +assert, +retract, +update, +transaction,
+                   +load, +reset
+                 ]).
+
+%   A store rebuild (oro_store_rebuild/0) empties rdf_db and fills it
+%   again: the log does not see it, and the verdicts, made at rdf_db
+%   generations that start again from 0, are forgotten.
+
+:- multifile oro_store:rebuild_hook/1.
+
+oro_store:rebuild_hook(suspend) :-
+    (   log_monitor_started
+    ->  rdf_monitor(oro_consistency:log_monitor, [-all])
+    ;   true
+    ).
+oro_store:rebuild_hook(resume) :-
+    with_mutex(oro_consistency,
+               ( retractall(verdict(_, _, _)),
+                 log_off
+               )),
+    (   log_monitor_started
+    ->  log_monitor_mask(Mask),
+        rdf_monitor(oro_consistency:log_monitor, Mask)
+    ;   true
     ).
 
 %   log_monitor(+Event): the rdf_monitor/2 callback.

@@ -202,15 +202,46 @@ max_seeds(2000).
 
 oro_events_start :-
     with_mutex(oro_events,
-               (   catch(thread_property(oro_watcher, status(running)), _, fail)
+               (   watcher_running
                ->  true
                ;   message_queue_create(_, [alias(oro_watcher_queue)]),
                    thread_create(watcher_loop, _,
                                  [alias(oro_watcher), detached(false)]),
-                   rdf_monitor(oro_events:monitor,
-                               [-all, +assert, +retract, +update,
-                                +transaction])
+                   monitor_mask(Mask),
+                   rdf_monitor(oro_events:monitor, Mask)
                )).
+
+monitor_mask([-all, +assert, +retract, +update, +transaction]).
+
+%   A store rebuild (oro_store_rebuild/0) must not reset rdf_db while
+%   changes wait in the watcher's queue with their snapshots; the
+%   watchers must not see the store emptied and filled again (with the
+%   same triples: their state stays right).
+
+:- multifile oro_store:rebuild_hook/1.
+
+oro_store:rebuild_hook(blocked(Deadline)) :-
+    watcher_running,
+    thread_self(Me),
+    gensym(oro_reply_, Tag),
+    thread_send_message(oro_watcher_queue, call(sync, Me, Tag)),
+    get_time(Now),
+    Timeout is max(0, Deadline - Now),
+    \+ thread_get_message(Me, reply(Tag, _), [timeout(Timeout)]).
+oro_store:rebuild_hook(suspend) :-
+    (   watcher_running
+    ->  rdf_monitor(oro_events:monitor, [-all])
+    ;   true
+    ).
+oro_store:rebuild_hook(resume) :-
+    (   watcher_running
+    ->  monitor_mask(Mask),
+        rdf_monitor(oro_events:monitor, Mask)
+    ;   true
+    ).
+
+watcher_running :-
+    catch(thread_property(oro_watcher, status(running)), _, fail).
 
 %!  oro_events_reset is det.
 %
@@ -698,7 +729,11 @@ subscriber_create(Deliver, Subscriber, Options, Owner) :-
     ->  Queue = direct(Deliver),
         Thread = none
     ;   message_queue_create(Queue, [max_size(Max)]),
-        thread_create(deliver_thread(Queue, Name, Deliver), Thread, [])
+        (   Owner == callback               % a planner's code reads the store
+        ->  Deliver1 = deliver_reading(Deliver)
+        ;   Deliver1 = Deliver
+        ),
+        thread_create(deliver_thread(Queue, Name, Deliver1), Thread, [])
     ),
     with_mutex(oro_events,
                assertz(subscriber(Subscriber, Queue, Thread, Owner))).
@@ -810,6 +845,13 @@ deliver_loop(Queue, Name, Deliver) :-
         catch(call(Deliver, Id, Content), E, delivery_error(E)),
         deliver_loop(Queue, Name, Deliver)
     ).
+
+%   A callback of oro_subscribe/8 runs with no store rebuild in progress
+%   (see oro_store_read/1).  A connection's delivery only writes to it:
+%   it may wait for a slow client, and must not hold up a rebuild.
+
+deliver_reading(Deliver, Id, Content) :-
+    oro_store_read(call(Deliver, Id, Content)).
 
 delivery_error(E) :-
     (   (   E == oro_delivery_aborted

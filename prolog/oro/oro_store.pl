@@ -23,7 +23,9 @@
             oro_store_attach/1,         % +Directory
             oro_store_detach/0,
             oro_scratch_graph/1,        % +Graph
-            oro_named/2                 % +LowerLocalName, -IRI
+            oro_named/2,                % +LowerLocalName, -IRI
+            oro_store_read/1,           % :Goal
+            oro_store_rebuild/0
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -31,11 +33,13 @@
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(debug)).
+:- use_module(library(settings)).
 :- use_module(oro_persist).
 :- use_module(oro_names, [oro_local_name/2]).
 
 :- meta_predicate
-    oro_store_write(+, 0).
+    oro_store_write(+, 0),
+    oro_store_read(0).
 
 /** <module> The store: graphs, models and asserted triples
 
@@ -251,14 +255,16 @@ rdf_graph_count(Graph, N) :-
 oro_store_write(Action, Goal) :-
     (   writing
     ->  rdf_transaction(Goal, oro(Action))
-    ;   with_mutex(oro_write,
-                   setup_call_cleanup(asserta(writing),
-                                      ( store_write(Action, Goal),
-                                        unindex_unused
-                                      ),
-                                      ( retractall(writing),
-                                        retractall(maybe_unused(_))
-                                      )))
+    ;   oro_store_read(
+            with_mutex(oro_write,
+                       setup_call_cleanup(asserta(writing),
+                                          ( store_write(Action, Goal),
+                                            unindex_unused,
+                                            note_garbage
+                                          ),
+                                          ( retractall(writing),
+                                            retractall(maybe_unused(_))
+                                          ))))
     ).
 
 %   A schema change bumps the generation when it is made (before other
@@ -623,3 +629,225 @@ unindex_unused :-
 index_graph_names(Graph) :-
     forall(rdf(S, P, O, Graph),
            index_names(S, P, O)).
+
+
+		 /*******************************
+		 *           REBUILD            *
+		 *******************************/
+
+/* rdf_db (SWI-Prolog 9.0.4) keeps every IRI it has ever been given in
+its resource table, with the atom, until rdf_reset_db/0: a robot naming
+new short-lived objects all day grows without bound, though no triple
+mentions them any more.  A *rebuild* gives that memory back: the store
+is emptied with the reset and filled again with the same triples.
+
+A reset must not run while another thread reads rdf_db: it crashes the
+process.  Readers therefore pass a *gate*: oro_store_read/1 counts them
+in and out, and a rebuild closes the gate, waits for the readers inside
+to leave, rebuilds, and opens it again.  Every write goes through the
+gate (oro_store_write/2), and so does every request of the server.  The
+watcher thread reads only snapshots of committed changes: a rebuild
+waits until it has processed them all (rebuild_hook(blocked(_))).
+
+Rebuilds are off unless the setting rebuild_garbage is set (the server
+sets it): a program that reads the store from several threads outside
+oro_store_read/1 must leave it off. */
+
+:- setting(rebuild_garbage, nonneg, 0,
+           'Resources rdf_db may hold beyond those it held after the last \c
+           rebuild (or twice as many, if more) before the store is rebuilt \c
+           to give their memory back (0: never rebuild)').
+:- setting(rebuild_wait, number, 2,
+           'Seconds a rebuild waits for the readers and watchers in progress \c
+           before it gives up, to try again later').
+
+%!  rebuild_hook(+Phase) is semidet.
+%
+%   Multifile hook called by a rebuild, with the `oro_write` mutex
+%   held and no reader in the gate.  Phase is
+%
+%     - blocked(+Deadline): succeed if the module still refers to
+%       rdf_db (snapshots) at time stamp Deadline: the rebuild gives
+%       up;
+%     - suspend: stop the rdf_monitor/2 callbacks, which must not see
+%       the store emptied and filled again;
+%     - resume: start them again.  What was derived from rdf_db
+%       generations (rdf_generation/1, reset to 0) is forgotten.
+
+:- multifile rebuild_hook/1.
+
+%!  oro_store_read(:Goal) is semidet.
+%
+%   Run Goal once, reading (or writing) the store, with no rebuild in
+%   progress: a rebuild waits until Goal is over, and Goal waits until a
+%   rebuild is over.  Calls nest.  If a rebuild is due when the
+%   outermost call is over, the calling thread runs it.
+
+oro_store_read(Goal) :-
+    (   nb_current(oro_store_reader, true)
+    ->  once(Goal)
+    ;   setup_call_cleanup(enter_gate, once(Goal), leave_gate),
+        rebuild_if_due
+    ).
+
+%   The reader counts itself in, then looks for a rebuild; the rebuild
+%   marks itself, then counts the readers (flag/3 is atomic): one of
+%   them sees the other.
+
+enter_gate :-
+    flag(oro_store_readers, N, N+1),
+    flag(oro_store_rebuilding, R, R),
+    (   R == 0
+    ->  nb_setval(oro_store_reader, true)
+    ;   flag(oro_store_readers, M, M-1),
+        with_mutex(oro_store_rebuild, true),    % held by the rebuild
+        enter_gate
+    ).
+
+leave_gate :-
+    nb_setval(oro_store_reader, false),
+    flag(oro_store_readers, N, N-1).
+
+rebuild_if_due :-
+    (   flag(oro_store_rebuild_due, 1, 1)
+    ->  catch(rebuild_due, E, print_message(warning, E))
+    ;   true
+    ).
+
+rebuild_due :-
+    (   oro_store_rebuild
+    ->  true
+    ;   rdf_statistics(resources(R)),           % try again a bit later
+        setting(rebuild_garbage, Garbage),
+        Retry is R + max(1, Garbage // 10),
+        flag(oro_store_rebuild_retry, _, Retry),
+        flag(oro_store_rebuild_due, _, 0)
+    ).
+
+%   note_garbage: after a committed write, see whether rdf_db holds
+%   enough resources beyond the live ones for a rebuild to be due.  The
+%   live ones are counted after each rebuild (0: not yet counted).
+
+note_garbage :-
+    setting(rebuild_garbage, Garbage),
+    (   Garbage =:= 0
+    ->  true
+    ;   rdf_statistics(resources(R)),
+        flag(oro_store_rebuild_live, Live, Live),
+        flag(oro_store_rebuild_retry, Retry, Retry),
+        (   Live =:= 0
+        ->  rebuilt(R)
+        ;   R > Live + max(Garbage, Live),
+            R > Retry
+        ->  flag(oro_store_rebuild_due, _, 1)
+        ;   true
+        )
+    ).
+
+rebuilt(Live) :-
+    flag(oro_store_rebuild_live, _, Live),
+    flag(oro_store_rebuild_retry, _, 0),
+    flag(oro_store_rebuild_due, _, 0).
+
+%!  oro_store_rebuild is semidet.
+%
+%   Rebuild the store now: empty rdf_db (rdf_reset_db/0) and fill it
+%   again with the same graphs and triples, so that it gives back the
+%   memory of the IRIs no triple mentions any more.  Models, watchers,
+%   deadlines and the journal are not affected; nothing is seen by the
+%   watchers.  Readers wait meanwhile (oro_store_read/1).  With a
+%   database directory, the models are reloaded from it (after the
+%   journals are flushed) and the ontology layer is copied.
+%
+%   Fails, changing nothing, if the readers inside oro_store_read/1 or
+%   the watcher thread are not done within the setting rebuild_wait.
+%
+%   @error permission_error(rebuild, oro_store, inside_reader) if
+%   called inside oro_store_read/1 or oro_store_write/2.
+
+oro_store_rebuild :-
+    (   nb_current(oro_store_reader, true)
+    ->  permission_error(rebuild, oro_store, inside_reader)
+    ;   true
+    ),
+    setting(rebuild_wait, Wait),
+    get_time(Now),
+    Deadline is Now + Wait,
+    with_mutex(oro_store_rebuild,
+               setup_call_cleanup(
+                   flag(oro_store_rebuilding, _, 1),
+                   ( readers_gone(Deadline),
+                     with_mutex(oro_write, rebuild_quiet(Deadline))
+                   ),
+                   flag(oro_store_rebuilding, _, 0))).
+
+readers_gone(Deadline) :-
+    flag(oro_store_readers, N, N),
+    (   N =:= 0
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline,
+        sleep(0.001),
+        readers_gone(Deadline)
+    ).
+
+rebuild_quiet(Deadline) :-
+    \+ rebuild_hook(blocked(Deadline)),
+    rdf_statistics(resources(Before)),
+    statistics(cputime, T0),
+    forall(rebuild_hook(suspend), true),
+    call_cleanup(refill_store,
+                 forall(rebuild_hook(resume), true)),
+    flag(oro_schema_generation, G, G+1),
+    flag(oro_store_rebuilds, N, N+1),
+    rdf_statistics(resources(After)),
+    rebuilt(After),
+    statistics(cputime, T1),
+    T is T1 - T0,
+    debug(oro(store), 'Rebuilt the store: ~D resources before, ~D after \c
+                       (~3f s)', [Before, After, T]).
+
+%   refill_store: empty rdf_db and fill it again.  Triples keep their
+%   source (Graph:Line); the gensym counter of blank nodes is kept
+%   (rdf_reset_db/0 would restart it, and a new blank node could take
+%   the name of an old one).
+
+refill_store :-
+    (   oro_persist_directory(Dir)
+    ->  findall(G, ( rdf_graph(G), \+ model_graph(G, _, _) ), Copied),
+        copy_graphs(Copied, Copies),
+        oro_persist_detach,
+        reset_rdf_db,
+        restore_graphs(Copies),
+        oro_persist_attach(Dir),
+        maplist(oro_persist_exclude, Copied)
+    ;   findall(G, rdf_graph(G), Graphs),
+        copy_graphs(Graphs, Copies),
+        reset_rdf_db,
+        restore_graphs(Copies)
+    ).
+
+copy_graphs(Graphs, Copies) :-
+    findall(G-Triples,
+            ( member(G, Graphs),
+              findall(rdf(S, P, O, Source),
+                      ( rdf(S, P, O, G:Line),
+                        (   var(Line)
+                        ->  Source = G
+                        ;   Source = G:Line
+                        )
+                      ),
+                      Triples)
+            ),
+            Copies).
+
+restore_graphs(Copies) :-
+    forall(member(G-Triples, Copies),
+           ( rdf_create_graph(G),
+             forall(member(rdf(S, P, O, Source), Triples),
+                    rdf_assert(S, P, O, Source))
+           )).
+
+reset_rdf_db :-
+    rdf_db:rdf_reset_db_,           % rdf_reset_db/0 without reset_gensym/1
+    presize_indexes.
