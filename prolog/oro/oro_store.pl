@@ -302,6 +302,12 @@ oro_store_assert(Model, Triples, Profile) :-
 assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     note_schema_change(P, O),
     index_names(S, P, O),
+    (   rdf(S, P, O)
+    ->  assert_known(Graph, Mask, Model, Profile, S, P, O)
+    ;   rdf_assert(S, P, O, Graph)      % in no graph: the usual new fact
+    ).
+
+assert_known(Graph, Mask, Model, Profile, S, P, O) :-
     (   rdf(S, P, O, Mask)
     ->  rdf_retractall(S, P, O, Mask)
     ;   true
