@@ -283,8 +283,12 @@ bench_with_connection(Port, Conn, Goal) :-
         once(Goal),
         disconnect(Conn)).
 
+%   nodelay: a request larger than the stream buffer goes out in
+%   several writes, and Nagle's algorithm would hold the last one until
+%   the server's delayed ACK (40 ms).
+
 connect(Port, bench_conn(In, Out)) :-
-    tcp_connect('127.0.0.1':Port, Pair, []),
+    tcp_connect('127.0.0.1':Port, Pair, [nodelay(true)]),
     stream_pair(Pair, In, Out),
     set_stream(In, encoding(utf8)),
     set_stream(In, newline(posix)),

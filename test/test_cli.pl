@@ -57,6 +57,10 @@ test(unknown_option, [true(Code \== 0)]) :-
     cli_run(['--bogus'], Code, _).
 test(bad_port, [true(Code \== 0)]) :-
     cli_run(['--port=abc'], Code, _).
+test(bad_rebuild_garbage, [true(Code \== 0)]) :-
+    cli_run(['--rebuild-garbage=-5'], Code, _).
+test(rebuild_garbage, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
+    test_cli_server(['--rebuild-garbage=0'], Port, hello(Port, Reply), _).
 test(missing_ontology, [true(Code \== 0)]) :-
     cli_run(['--ontology=/nonexistent/x.owl'], Code, _).
 test(listening_default_ontology, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-

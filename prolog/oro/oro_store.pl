@@ -690,6 +690,7 @@ oro_store_read/1 must leave it off. */
 %   outermost call is over, the calling thread runs it.
 
 oro_store_read(Goal) :-
+    must_be(callable, Goal),
     (   nb_current(oro_store_reader, true)
     ->  once(Goal)
     ;   setup_call_cleanup(enter_gate, once(Goal), leave_gate),
