@@ -205,7 +205,7 @@ oro_events_start :-
                (   watcher_running
                ->  true
                ;   message_queue_create(_, [alias(oro_watcher_queue)]),
-                   thread_create(watcher_loop, _,
+                   thread_create(watcher_start, _,
                                  [alias(oro_watcher), detached(false)]),
                    monitor_mask(Mask),
                    rdf_monitor(oro_events:monitor, Mask)
@@ -943,6 +943,14 @@ oro_unsubscribe(Id) :-
 		 /*******************************
 		 *        WATCHER THREAD        *
 		 *******************************/
+
+%   The watcher thread passes a closed rebuild gate (oro_store_read/1):
+%   a rebuild waits for it to process every change, and the writes of
+%   its in-watcher callbacks (agent models) are part of that.
+
+watcher_start :-
+    oro_store_gate_exempt,
+    watcher_loop.
 
 watcher_loop :-
     thread_get_message(oro_watcher_queue, Message),

@@ -25,7 +25,8 @@
             oro_scratch_graph/1,        % +Graph
             oro_named/2,                % +LowerLocalName, -IRI
             oro_store_read/1,           % :Goal
-            oro_store_rebuild/0
+            oro_store_rebuild/0,
+            oro_store_gate_exempt/0
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -669,8 +670,9 @@ oro_store_read/1 must leave it off. */
 
 %!  rebuild_hook(+Phase) is semidet.
 %
-%   Multifile hook called by a rebuild, with the `oro_write` mutex
-%   held and no reader in the gate.  Phase is
+%   Multifile hook called by a rebuild, with no reader in the gate
+%   (and, but for the first `blocked`, the `oro_write` mutex held).
+%   Phase is
 %
 %     - blocked(+Deadline): succeed if the module still refers to
 %       rdf_db (snapshots) at time stamp Deadline: the rebuild gives
@@ -704,7 +706,9 @@ oro_store_read(Goal) :-
 enter_gate :-
     flag(oro_store_readers, N, N+1),
     flag(oro_store_rebuilding, R, R),
-    (   R == 0
+    (   (   R == 0
+        ;   nb_current(oro_store_gate_exempt, true)
+        )
     ->  nb_setval(oro_store_reader, true)
     ;   flag(oro_store_readers, M, M-1),
         with_mutex(oro_store_rebuild, true),    % held by the rebuild
@@ -716,7 +720,8 @@ leave_gate :-
     flag(oro_store_readers, N, N-1).
 
 rebuild_if_due :-
-    (   flag(oro_store_rebuild_due, 1, 1)
+    (   flag(oro_store_rebuild_due, 1, 1),
+        \+ nb_current(oro_store_gate_exempt, true)
     ->  catch(rebuild_due, E, print_message(warning, E))
     ;   true
     ).
@@ -756,6 +761,16 @@ rebuilt(Live) :-
     flag(oro_store_rebuild_retry, _, 0),
     flag(oro_store_rebuild_due, _, 0).
 
+%!  oro_store_gate_exempt is det.
+%
+%   The calling thread passes a closed gate (oro_store_read/1), and
+%   never runs a rebuild itself: for the watcher thread, which a
+%   rebuild waits for (rebuild_hook/1, `blocked`) before it takes the
+%   `oro_write` mutex.
+
+oro_store_gate_exempt :-
+    nb_setval(oro_store_gate_exempt, true).
+
 %!  oro_store_rebuild is semidet.
 %
 %   Rebuild the store now: empty rdf_db (rdf_reset_db/0) and fill it
@@ -784,6 +799,7 @@ oro_store_rebuild :-
                setup_call_cleanup(
                    flag(oro_store_rebuilding, _, 1),
                    ( readers_gone(Deadline),
+                     \+ rebuild_hook(blocked(Deadline)),
                      with_mutex(oro_write, rebuild_quiet(Deadline))
                    ),
                    flag(oro_store_rebuilding, _, 0))).
@@ -797,6 +813,10 @@ readers_gone(Deadline) :-
         sleep(0.001),
         readers_gone(Deadline)
     ).
+
+%   Once the readers are gone, the hooks let go of rdf_db first
+%   without the `oro_write` mutex (the watcher thread may still write),
+%   then again with it (nothing can write any more).
 
 rebuild_quiet(Deadline) :-
     \+ rebuild_hook(blocked(Deadline)),
