@@ -10,6 +10,7 @@
             test_wait_until/2,          % :Condition, +Seconds
             test_server_start/1,        % +Options
             test_server_start_testsuite/0,
+            test_server_start_testsuite/1, % +Options
             test_server_start_time_base/2, % +Options, -TimeBase
             test_server_stop/0,
             test_server_stop_synced/0,
@@ -218,8 +219,16 @@ test_server_start(Options) :-
 %   ontology alone.
 
 test_server_start_testsuite :-
+    test_server_start_testsuite([]).
+
+%!  test_server_start_testsuite(+Options) is det.
+%
+%   As test_server_start_testsuite/0, with more options of
+%   oro_server_start/2.
+
+test_server_start_testsuite(Options) :-
     test_fixture('testsuite.ttl', File),
-    test_server_start([commonsense(false), ontology(File)]).
+    test_server_start([commonsense(false), ontology(File)|Options]).
 
 %!  test_server_start_time_base(+Options, -TimeBase) is det.
 %
@@ -237,12 +246,15 @@ test_server_start_time_base(Options, TimeBase) :-
 %
 %   Stop the unit's server, if any, once its workers have seen their
 %   clients leave (test_server_wait_idle/0), so that no worker is still
-%   running when the next unit starts or the process halts.
+%   running when the next unit starts or the process halts.  Store
+%   rebuilds, which the server turned on, are off again: the tests
+%   that follow read the store from their own thread.
 
 test_server_stop :-
     forall(retract(test_server(Server)),
            ( wait_idle(Server),
-             oro_server_stop(Server)
+             oro_server_stop(Server),
+             restore_setting(oro_store:rebuild_garbage)
            )).
 
 %!  test_server_stop_synced is det.

@@ -66,7 +66,7 @@ fuzz_start :-
     fuzz_max_params(Params),
     set_setting(oro_server:max_request_size, Size),
     set_setting(oro_server:max_params, Params),
-    test_server_start_testsuite.
+    test_server_start_testsuite([rebuild_garbage(50)]).  % rebuilds too
 
 fuzz_stop :-
     test_server_stop,

@@ -298,7 +298,6 @@ test(restart, [ setup(tmp_file(oro_rebuild_db, Dir)),
 :- begin_tests(rebuild_server,
                [ setup(test_server_start([rebuild_garbage(300)])),
                  cleanup(( test_server_stop,
-                           restore_setting(oro_store:rebuild_garbage),
                            oro_init([])
                          ))
                ]).
