@@ -9,7 +9,8 @@
     server is started with --rebuild-garbage (default: its own default)
     so that the rebuilds keep rdf_db's resource table bounded.  Then
     the time of a rebuild in process, without and with a database
-    directory, at 100,000 and 1,000,000 triples (--triples=...).
+    directory, at 100,000 and 1,000,000 triples (--triples=...) of
+    bench_world/2, and what the rebuild's gate costs a call.
 */
 
 :- initialization(main, main).
@@ -41,7 +42,18 @@ main :-
                       bench_with_connection(Port, Conn,
                                             churn(Conn, Pid, Names))),
     format("~n| triples | rebuild in memory | with --db |~n|---|---|---|~n"),
-    forall(member(Size, Sizes), rebuild_row(Size)).
+    forall(member(Size, Sizes), rebuild_row(Size)),
+    gate_cost.
+
+%   gate_cost: what the rebuild's gate (oro_store_read/1) costs a call,
+%   in process, against once/1.
+
+gate_cost :-
+    N = 1000000,
+    bench_time(forall(between(1, N, _), oro_store_read(true)), Gate),
+    bench_time(forall(between(1, N, _), once(true)), Bare),
+    PerCall is (Gate - Bare) / N,
+    format("~noro_store_read/1: ~3f us a call (~D calls)~n", [PerCall, N]).
 
 %   churn(+Conn, +Pid, +Names): Names fresh names, 1000 per add/remove
 %   pair, a row every million.
@@ -95,16 +107,9 @@ rebuild_row(Size) :-
 
 rebuild_time(Options, Size, Seconds) :-
     oro_init(Options),
-    Batches is Size // 1000,
-    forall(between(1, Batches, B),
-           ( findall(S, ( between(1, 1000, K),
-                          F is K mod 50,
-                          format(string(S), "obj~d_~d isOn furniture~d",
-                                 [B, K, F])
-                        ),
-                     Statements),
-             oro_add(myself, Statements)
-           )),
+    bench_world(Size, World),
+    bench_batches(World, 1000, Batches),
+    forall(member(Batch, Batches), oro_add(myself, Batch)),
     get_time(T0),
     oro_store_rebuild,
     get_time(T1),

@@ -32,7 +32,9 @@
             test_cli_server/4,          % +Args, -Port, :Goal, -Stderr
             test_log_request/2,         % +Line, -Request
             test_diff/4,                % +Expected, +Actual, +Max, -Diff
-            test_first/3                % +N, +List, -First
+            test_first/3,               % +N, +List, -First
+            test_seed/2,                % +EnvVar, -Seed
+            test_with_setting/3         % +Setting, +Value, :Goal
           ]).
 :- reexport(oro_test_client).
 :- use_module(library(lists)).
@@ -571,3 +573,29 @@ test_first(N, List, First) :-
     ;   length(First, N),
         append(First, _, List)
     ).
+
+%!  test_seed(+EnvVar, -Seed) is det.
+%
+%   The seed of a randomized test: the integer in the environment
+%   variable EnvVar (to replay a run), else one taken from the clock.
+
+test_seed(EnvVar, Seed) :-
+    (   getenv(EnvVar, Text),
+        atom_number(Text, Seed0),
+        integer(Seed0)
+    ->  Seed = Seed0
+    ;   get_time(Now),
+        Seed is integer(Now * 1000) mod 1000000007
+    ).
+
+%!  test_with_setting(+Setting, +Value, :Goal) is semidet.
+%
+%   Goal with Setting (a qualified setting name) at Value, restored to
+%   its default afterwards.
+
+:- meta_predicate test_with_setting(+, +, 0).
+
+test_with_setting(Setting, Value, Goal) :-
+    setup_call_cleanup(set_setting(Setting, Value),
+                       Goal,
+                       restore_setting(Setting)).

@@ -42,16 +42,6 @@
 exh_long :-
     getenv('ORO_LONG_TESTS', '1').
 
-%   exh_with_setting(+Setting, +Value, :Goal): Goal with Setting (a
-%   qualified setting name) at Value, restored to its default after.
-
-:- meta_predicate exh_with_setting(+, +, 0).
-
-exh_with_setting(Setting, Value, Goal) :-
-    setup_call_cleanup(set_setting(Setting, Value),
-                       Goal,
-                       restore_setting(Setting)).
-
 exh_connect(Conn) :-
     test_server_port(Port),
     oro_connect(Port, Conn, [nodelay(true)]).
@@ -237,7 +227,7 @@ test(names, [true(Outcome == ok)]) :-
     exh_names(Names),
     exh_names_garbage(Garbage),
     exh_connect(Conn),
-    call_cleanup(exh_with_setting(oro_store:rebuild_garbage, Garbage,
+    call_cleanup(test_with_setting(oro_store:rebuild_garbage, Garbage,
                                   exh_names_kept(Conn, Names, Outcome)),
                  oro_disconnect(Conn)).
 
@@ -326,7 +316,7 @@ exh_event_load(Conn, Round, Batches, Outcome) :-
 test(events_to_a_client_that_never_reads,
      [ true(Served-Dropped == served-dropped) ]) :-
     exh_threads(Before),
-    exh_with_setting(
+    test_with_setting(
         oro_server:write_timeout, 1,
         ( exh_connect(Silent),
           call_cleanup(
@@ -444,7 +434,7 @@ test(silent_clients,
 test(idle_timeout_frees_the_server, [true(Closed-Again == all-true)]) :-
     exh_max_connections(Max),
     test_wait_until(exh_no_connection, 10),   % the last test's are gone
-    exh_with_setting(
+    test_with_setting(
         oro_server:idle_timeout, 1,
         ( exh_open(Max, Silent),
           call_cleanup(
@@ -557,7 +547,7 @@ exh_time_limit(0.2).
 
 exh_timed(Method, Params, Outcome, OtherServed) :-
     exh_time_limit(Limit),
-    exh_with_setting(
+    test_with_setting(
         oro_query:time_limit, Limit,
         ( exh_connect(Conn),
           call_cleanup(
@@ -621,7 +611,7 @@ exh_default(Setting, Default) :-
 
 test(request_size_exact,
      [ true(At-Over == [ok, end_of_file]-[too_large, end_of_file]) ]) :-
-    exh_with_setting(oro_server:max_request_size, 4096,
+    test_with_setting(oro_server:max_request_size, 4096,
                      ( exh_sized(4096, R1),
                        exh_sized(4097, R2)
                      )),

@@ -87,13 +87,7 @@ fuzz_sizes(Connections, Requests) :-
     ).
 
 fuzz_seed(Seed) :-
-    (   getenv('ORO_FUZZ_SEED', Text),
-        atom_number(Text, Seed0),
-        integer(Seed0)
-    ->  Seed = Seed0
-    ;   get_time(Now),
-        Seed is integer(Now * 1000) mod 1000000007
-    ).
+    test_seed('ORO_FUZZ_SEED', Seed).
 
 %   fuzz_store(-Triples): what the robot's model holds (asserted and
 %   visible ontology triples), sorted.

@@ -45,13 +45,6 @@ rb_churn(Model, Prefix, N) :-
              oro_remove(Model, [S])
            )).
 
-:- meta_predicate rb_with_setting(+, +, 0).
-
-rb_with_setting(Setting, Value, Goal) :-
-    setup_call_cleanup(set_setting(Setting, Value),
-                       Goal,
-                       restore_setting(Setting)).
-
 rb_world :-
     oro_init([]),
     oro_add(myself, [ "cup1 rdf:type Cup", "cup1 isOn table1",
@@ -164,7 +157,7 @@ test(waits_for_readers) :-
                   Reader, []),
     thread_get_message(rb_inside),
     rb_rebuilds(N0),
-    rb_with_setting(oro_store:rebuild_wait, 0.2,
+    test_with_setting(oro_store:rebuild_wait, 0.2,
                     assertion(\+ oro_store_rebuild)),
     rb_rebuilds(N1),
     assertion(N1 == N0),
@@ -183,8 +176,8 @@ test(waits_for_readers) :-
 
 test(agent_during_rebuild) :-
     rb_rebuilds(N0),
-    rb_with_setting(oro_store:rebuild_wait, 30,
-        rb_with_setting(oro_store:rebuild_garbage, 1,
+    test_with_setting(oro_store:rebuild_wait, 30,
+        test_with_setting(oro_store:rebuild_garbage, 1,
             ( flag(oro_store_rebuild_due, _, 1),
               call_with_time_limit(20,
                   oro_add(myself, ["gerard rdf:type Human"])),
@@ -203,7 +196,7 @@ test(automatic) :-
     oro_store_rebuild,
     rb_resources(Live),
     rb_rebuilds(N0),
-    rb_with_setting(oro_store:rebuild_garbage, 1000,
+    test_with_setting(oro_store:rebuild_garbage, 1000,
                     rb_churn(myself, rbauto, 5000)),
     rb_rebuilds(N1),
     rb_resources(R),
@@ -216,7 +209,7 @@ test(automatic) :-
 
 test(concurrent, [true(Errors == [])]) :-
     rb_rebuilds(N0),
-    rb_with_setting(oro_store:rebuild_garbage, 300,
+    test_with_setting(oro_store:rebuild_garbage, 300,
                     rb_concurrent(Errors)),
     rb_rebuilds(N1),
     assertion(N1 >= N0 + 3).

@@ -51,13 +51,7 @@ soak_sizes(Clients, Operations) :-
     ).
 
 soak_seed(Seed) :-
-    (   getenv('ORO_SOAK_SEED', Text),
-        atom_number(Text, Seed0),
-        integer(Seed0)
-    ->  Seed = Seed0
-    ;   get_time(Now),
-        Seed is integer(Now * 1000) mod 1000000007
-    ).
+    test_seed('ORO_SOAK_SEED', Seed).
 
 %   Each client has 4 subjects, each with values among 8 objects.
 

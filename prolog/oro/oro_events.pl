@@ -222,12 +222,9 @@ monitor_mask([-all, +assert, +retract, +update, +transaction]).
 
 oro_store:rebuild_hook(blocked(Deadline)) :-
     watcher_running,
-    thread_self(Me),
-    gensym(oro_reply_, Tag),
-    thread_send_message(oro_watcher_queue, call(sync, Me, Tag)),
     get_time(Now),
     Timeout is max(0, Deadline - Now),
-    \+ thread_get_message(Me, reply(Tag, _), [timeout(Timeout)]).
+    \+ call_watcher(sync, true, [timeout(Timeout)]).
 oro_store:rebuild_hook(suspend) :-
     (   watcher_running
     ->  rdf_monitor(oro_events:monitor, [-all])
@@ -270,11 +267,18 @@ call_watcher(Request) :-
     call_watcher(Request, true).
 
 call_watcher(Request, Reply) :-
+    call_watcher(Request, Reply, []).
+
+%   call_watcher(+Request, -Reply, +Options): fails if the reply does not
+%   come within Options' timeout(Seconds) (it is then left in the
+%   caller's queue, where no later call looks for its tag).
+
+call_watcher(Request, Reply, Options) :-
     oro_events_start,
     thread_self(Me),
     gensym(oro_reply_, Tag),
     thread_send_message(oro_watcher_queue, call(Request, Me, Tag)),
-    thread_get_message(reply(Tag, Result)),
+    thread_get_message(Me, reply(Tag, Result), Options),
     (   Result = error(E)
     ->  throw(E)
     ;   Result = Reply
