@@ -69,7 +69,8 @@ in 64 KiB chunks, so memory stays around the limit even for lines of
 many megabytes.
 
 The usual case takes fast paths that give what the general code gives
-(test/test_parse.pl compares them): a block without `\r` or NUL is cut
+(test/test_parse.pl compares them): a block that is exactly one whole
+request is split into its lines at once, a block without `\r` or NUL is cut
 with one split_string/4, a whole line found in one block (or a bare
 `#end#`) is returned at once, and a list of strings none of which needs
 escaping is encoded in one piece.
@@ -254,8 +255,48 @@ final_request(bad(too_large(_))).
 %   request from a bare `#end#`).
 
 request(In, Limit, state(Skip0, Help0, Tokens0), Request, State) :-
-    request_start(In, Limit, Limit, Skip0, Help0, false, Tokens0,
-                  Request, State).
+    (   Tokens0 == [],
+        Help0 == false,
+        Skip0 \== lf
+    ->  read_block(In, Block),
+        (   whole_request(Block, Limit, Request0)
+        ->  Request = Request0,
+            State = state(none, false, [])
+        ;   cut_block(Block, Tokens1),
+            request_start(In, Limit, Limit, Skip0, false, false, Tokens1,
+                          Request, State)
+        )
+    ;   request_start(In, Limit, Limit, Skip0, Help0, false, Tokens0,
+                      Request, State)
+    ).
+
+%!  whole_request(+Block, +Limit, -Request) is semidet.
+%
+%   The usual case, decided from one block read at the start of a
+%   request: Block is exactly one request of valid UTF-8 whose first
+%   line is a method (not empty, not `help`), ending with the only
+%   `#end#` it has (in any case), on a line of its own, and the `\n`
+%   after it; no `\r`, no NUL, at most Limit bytes.  Request is what
+%   request_start/9 gives for the same bytes (test/test_parse.pl
+%   compares them); anything else fails and goes the general way.
+
+whole_request(Block, Limit, request(Method, Params)) :-
+    string_length(Block, Length),
+    Length =< Limit,
+    sub_string(Block, Before, 7, 0, "\n#end#\n"),
+    sub_atom_icasechk(Block, End, "#end#"),
+    End =:= Before + 1,
+    \+ sub_atom_icasechk(Block, _, "\r"),
+    \+ sub_atom_icasechk(Block, _, "\u0000"),
+    utf8_decode(Block, Text),
+    split_string(Text, "\n", "", [Method|Lines]),
+    Method \== "",
+    \+ help_line(Method),
+    append(Params0, ["#end#", ""], Lines),
+    !,
+    reverse(Params0, Reversed0),
+    drop_empty_lines(Reversed0, Reversed),
+    reverse(Reversed, Params).
 
 request_start(In, Limit, Budget, Skip0, Help0, Blank, Tokens0,
               Request, State) :-
@@ -376,31 +417,40 @@ help_line(Line) :-
 next_token(_, [Token|Tokens], Token, Tokens) :-
     !.
 next_token(In, [], Token, Tokens) :-
-    fill(In, Tokens0),
+    read_block(In, Block),
+    cut_block(Block, Tokens0),
     (   Tokens0 = [Token|Tokens]
     ->  true
     ;   Token = eof,
         Tokens = []
     ).
 
-%!  fill(+Source, -Tokens) is det.
+%!  read_block(+Source, -Block) is det.
 %
 %   Read the next block from Source, blocking until some bytes are
-%   available; Tokens is [] at end of file.  Source is source(In, Mode),
-%   see byte_mode/3.
+%   available: Block is a string of bytes (characters 0..255), "" at
+%   end of file.  Source is source(In, Mode), see byte_mode/3.
 
-fill(source(In, Mode), Tokens) :-
+read_block(source(In, Mode), Block) :-
     fill_buffer(In),
     read_pending_codes(In, Codes, []),
     (   Codes == []
+    ->  Block = ""
+    ;   block(Mode, Codes, Block)
+    ).
+
+%!  cut_block(+Block, -Tokens) is det.
+%
+%   The tokens of a block; [] for "".
+
+cut_block(Block, Tokens) :-
+    (   Block == ""
     ->  Tokens = []
-    ;   block(Mode, Codes, Block),
-        (   \+ sub_atom_icasechk(Block, _, "\r"),  % the usual case
-            \+ sub_atom_icasechk(Block, _, "\u0000")
-        ->  split_string(Block, "\n", "", Lines),
-            lines_tokens(Lines, Tokens)
-        ;   general_block_tokens(Block, Tokens)
-        )
+    ;   \+ sub_atom_icasechk(Block, _, "\r"),     % the usual case
+        \+ sub_atom_icasechk(Block, _, "\u0000")
+    ->  split_string(Block, "\n", "", Lines),
+        lines_tokens(Lines, Tokens)
+    ;   general_block_tokens(Block, Tokens)
     ).
 
 %   lines_tokens(+Lines, -Tokens): the tokens of a block without `\r`

@@ -875,6 +875,34 @@ test(line_fast_agrees, Bad-Taken == []-true) :-
     ->  Taken = true
     ;   Taken = N
     ).
+test(whole_request_agrees, Bad-Taken == []-true) :-
+    set_random(seed(7)),
+    numlist(1, 8000, Is),
+    findall(Block, ( member(_, Is), random_request_block(Block) ), Blocks),
+    setup_call_cleanup(
+        empty_octet_stream(MF, In),
+        findall(Block-Limit-Fast-General,
+                ( member(Block, Blocks),
+                  member(Limit, [1000, 16]),
+                  oro_protocol:whole_request(Block, Limit, Fast),
+                  oro_protocol:cut_block(Block, Tokens),
+                  oro_protocol:request_start(source(In, bytes), Limit, Limit,
+                                             none, false, false, Tokens,
+                                             Request, State),
+                  General = Request-State,
+                  \+ ( General = Fast-state(eol, false, [nl]) )
+                ),
+                Bad),
+        ( close(In), free_memory_file(MF) )),
+    aggregate_all(count,
+                  ( member(Block, Blocks),
+                    oro_protocol:whole_request(Block, 1000, _)
+                  ),
+                  N),
+    (   N > 300
+    ->  Taken = true
+    ;   Taken = N
+    ).
 test(list_encoding_random, Bad == []) :-
     set_random(seed(99)),
     numlist(1, 2000, Is),
@@ -898,6 +926,25 @@ test(null_atom_not_a_string, true(S == "[\"a\",null]")) :-
 empty_octet_stream(MF, In) :-
     new_memory_file(MF),
     open_memory_file(MF, read, In, [encoding(octet)]).
+
+%   random_request_block(-Block): a block of bytes that is often one
+%   whole request and sometimes almost one.
+
+random_request_block(Block) :-
+    random_between(1, 5, N),
+    length(Lines, N),
+    maplist(random_request_line, Lines),
+    random_member(End, ["\n#end#\n", "\n#end#\n", "\n#end#\n", "#end#\n",
+                        "\n#END#\n", "\n#end#", "\n#end#\nx\n#end#\n", ""]),
+    atomic_list_concat(Lines, '\n', Text),
+    atomics_to_string([Text, End], Block).
+
+random_request_line(Line) :-
+    random_member(Line, [ "check", "add", "help", "HeLp \t", "", "", "[a b c]",
+                          "x#end#", "#END#y", "\u00c3\u00a9t\u00c3\u00a9",
+                          "\u00c3", "\u00ed\u00a0\u0080", "a\rb", "a\u0000b",
+                          "  spaced ", "0123456789abcdef"
+                        ]).
 
 %   line_case(-Case): a token at the start of a line, what is known to
 %   follow it, and the byte budget.
