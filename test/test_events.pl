@@ -2398,6 +2398,14 @@ test(through_inverse_and_sub_property,
                      add(["c1 isAt t1"]),           % isAt now holds twice
                      remove(["t1 isUnder c1"])      % isAt still holds, isOn not
                    ], Log).
+test(watched_among_unwatched_predicates,
+     [ true(Log == [[1-[c1]], [], [1-[c2]]])
+     ]) :-
+    ev_inc_session([ new_instance-on_toggle-x-["?x isAt t1"] ],
+                   [ add(["c1 hasColor red", "c1 isOn t1", "c2 hasColor blue"]),
+                     add(["c2 hasColor green", "c3 isVisible true"]),
+                     add(["c3 hasColor red", "t1 isUnder c2"])
+                   ], Log).
 test(same_as_individuals,
      [ true(Log == [[], [1-[c1]], [1-[c1]]])
      ]) :-

@@ -374,12 +374,20 @@ graph_model(G, Model, Layer) :-
 %   put in a model's mask is removed from it).  Past max_delta/1
 %   triples, or for a change the watchers cannot follow triple by
 %   triple (the ontology layer, rdf_update), the list is dropped: the
-%   change is then evaluated in full.
+%   change is then evaluated in full.  A triple of a model none of
+%   whose watchers depends on its predicate is not recorded: no watcher
+%   would look at it (concerned/3, triggered/6).  What the watchers
+%   depend on is read as relevant/1 reads it: while the watcher thread
+%   has registrations or schema changes to process, every triple is
+%   recorded.
 
 note_delta(Model, Layer, Sign0, S, P, O) :-
     (   delta_overflow
     ->  true
     ;   Model == '$none'
+    ->  true
+    ;   Model \== '$all',
+        \+ followed(Model, P)
     ->  true
     ;   delta_sign(Model, Layer, Sign0, Sign),
         delta_room
@@ -388,6 +396,13 @@ note_delta(Model, Layer, Sign0, S, P, O) :-
         nb_setval(oro_events_delta_size, 0),
         assertz(delta_overflow)
     ).
+
+followed(Model, P) :-
+    (   pending
+    ;   watcher_dep(Model, any, _)
+    ;   watcher_dep(Model, P, _)
+    ),
+    !.
 
 delta_sign(Model, Layer, Sign0, Sign) :-
     Model \== '$all',
