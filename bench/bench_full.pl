@@ -5,6 +5,7 @@
                                   [--samples=300] [--budget=15]
                                   [--json=bench/results.json]
                                   [--log=../shared/workloads/robot-session-2011.log]
+                                  [--pin=CPU]
 
     For each size, the same synthetic robot world is first loaded in
     this process with library(oro) (oro_init/1, oro_add/2), where
@@ -39,6 +40,12 @@
     on a fresh server with the robot id of that experiment; startup to
     listening of the server with the bundled ontology; the 1M/100k
     ratios; the targets with PASS/MISS.
+
+    --pin=CPU runs this process and every process it starts on that
+    one CPU (see pin_to_cpu/1): the socket figures and their echo floor
+    are then measured with the same placement, which the scheduler does
+    not promise otherwise.  Throughput (bulk add, 8 clients) is lower
+    there, as the client and the server take turns on one core.
 
     A table on stdout, progress on stderr, and everything in the JSON
     file (default bench/results.json): the machine line, the floors,
@@ -82,6 +89,7 @@ opt_type(budget, budget, nonneg).
 opt_type(json, json, atom).
 opt_type(log, log, atom).
 opt_type(echo, echo, boolean).
+opt_type(pin, pin, nonneg).
 
 main :-
     current_prolog_flag(argv, Argv),
@@ -124,7 +132,12 @@ bench(Options) :-
     get_time(Start),
     nb_setval(bench_start, Start),
     retractall(said(_)),
-    machine(Sizes, Samples, Budget, Machine),
+    (   option(pin(CPU), Options)
+    ->  pin_to_cpu(CPU),
+        Placement = cpu(CPU)
+    ;   Placement = free
+    ),
+    machine(Sizes, Samples, Budget, Placement, Machine),
     Params = params{samples:Samples, budget:Budget},
     in_process_floors(Floors),
     max_list(Sizes, Largest),
@@ -151,13 +164,32 @@ bench(Options) :-
 self_script(File) :-
     absolute_file_name(oro_bench('bench_full.pl'), File, [access(read)]).
 
-%   machine(+Sizes, +Samples, +Budget, -Machine): print the machine line
-%   (bench_common:bench_machine/0) and the run's parameters; Machine
-%   holds both lines as printed and their parts.
+%   pin_to_cpu(+CPU): run every thread of this process, and so every
+%   process it starts later (the servers, the echo), on CPU only
+%   (taskset(1)).  A request and its reply then never cross from one
+%   core to another: on a virtual machine such a wake-up costs tens of
+%   microseconds, and whether the scheduler puts a client and its
+%   server on the same core or not differs from one process to the
+%   next, so the ratios to the echo floor are only comparable when
+%   every process shares one core.
 
-machine(Sizes, Samples, Budget,
+pin_to_cpu(CPU) :-
+    current_prolog_flag(pid, Pid),
+    process_create(path(taskset), ['-a', '-p', '-c', CPU, Pid],
+                   [stdout(null), process(Proc)]),
+    process_wait(Proc, Status),
+    (   Status == exit(0)
+    ->  true
+    ;   throw(error(bench_pin(CPU, Status), _))
+    ).
+
+%   machine(+Sizes, +Samples, +Budget, +Placement, -Machine): print the
+%   machine line (bench_common:bench_machine/0) and the run's
+%   parameters; Machine holds both lines as printed and their parts.
+
+machine(Sizes, Samples, Budget, Placement,
         machine{line:Line, run_line:RunLine, prolog:V, cpu:CPU, cores:Cores,
-                date:Date}) :-
+                date:Date, placement:PlacementText}) :-
     with_output_to(string(Line0), bench_machine),
     split_string(Line0, "", "\n", [Line]),
     say("~w~n", [Line]),
@@ -171,9 +203,14 @@ machine(Sizes, Samples, Budget,
     current_prolog_flag(cpu_count, Cores),
     get_time(Now),
     format_time(string(Date), '%F %T', Now),
-    format(string(RunLine), "~d cores; ~w; sizes ~w, ~d samples, budget ~d s an operation",
-           [Cores, Date, Sizes, Samples, Budget]),
+    placement_text(Placement, PlacementText),
+    format(string(RunLine), "~d cores; ~w; sizes ~w, ~d samples, budget ~d s an operation; ~w",
+           [Cores, Date, Sizes, Samples, Budget, PlacementText]),
     say("~w~n", [RunLine]).
+
+placement_text(free, "processes placed by the scheduler").
+placement_text(cpu(CPU), Text) :-
+    format(string(Text), "every process on CPU ~d (--pin)", [CPU]).
 
 %   say(+Format, +Args): print on stdout (flushed) and keep the text
 %   for the report in the JSON file.  report(-Lines): what say/2

@@ -144,16 +144,14 @@ call_method(transaction(Impl), Name, Context, Args, Value) :-
                     call_method(Impl, Name, Context, Args, Value)).
 call_method(context(Goal), _, Context, Args, Value) :-
     !,
-    Call =.. [call, Goal, Context|Args],
-    append_reply(Call, Value).
+    append([Context|Args], [Value], AllArgs),
+    call_reply(Goal, AllArgs).
 call_method(Goal, _, _, Args, Value) :-
-    Call =.. [call, Goal|Args],
-    append_reply(Call, Value).
+    append(Args, [Value], AllArgs),
+    call_reply(Goal, AllArgs).
 
-append_reply(Call0, Value) :-
-    Call0 =.. List0,
-    append(List0, [Value], List),
-    Call =.. List,
+call_reply(Goal, Args) :-
+    Call =.. [call, Goal|Args],
     (   call(Call)
     ->  true
     ;   throw(error(oro_method(failed), _))

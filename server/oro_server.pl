@@ -355,13 +355,15 @@ serve_stream(Server, Pair, Peer) :-
     ),
     debug(oro(server), 'Connection from ~q', [Peer]),
     setting(max_request_size, Limit),
+    setting(max_params, MaxParams),
     thread_self(Me),
     setup_call_cleanup(
         ( mutex_create(Mutex),
           with_mutex(oro_connections, assertz(connection(Mutex)))
         ),
         ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
-                      mutex:Mutex, thread:Me, subscribers:slot([])},
+                      mutex:Mutex, thread:Me, subscribers:slot([]),
+                      max_params:MaxParams},
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
@@ -425,8 +427,8 @@ handle_request(bad(encoding), Context, Out) :-
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                "The request is not valid UTF-8.")).
 handle_request(request(_, Params), Context, Out) :-
-    setting(max_params, Max),
     length(Params, N),
+    Max = Context.max_params,
     N > Max,
     !,
     format(string(Message), "Too many parameters: ~D (at most ~D).", [N, Max]),
@@ -434,6 +436,7 @@ handle_request(request(_, Params), Context, Out) :-
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                Message)).
 handle_request(request(Method, _), Context, Out) :-
+    string_length(Method, 5),
     string_lower(Method, "close"),
     !,
     with_mutex(Context.mutex, oro_write_closing(Out)),
