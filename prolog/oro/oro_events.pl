@@ -1390,17 +1390,20 @@ model_delta(Model, Delta, Added, Removed, Same) :-
     sort(Added0, Added),
     findall(t(S, P, O), member(d(Model, del, S, P, O), Delta), Removed0),
     sort(Removed0, Removed),
-    findall(X, ( member(d(Model, _, S, _, O), Delta),
-                 (   X = S
-                 ;   X = O
-                 ),
-                 atom(X)
-               ), Resources0),
-    sort(Resources0, Resources),
-    findall(X-Ys, ( member(X, Resources),
-                    findall(Y, oro_same_individual(Model, X, Y), Ys)
-                  ), Pairs),
-    list_to_assoc(Pairs, Same).
+    (   oro_has_same_individuals(Model)
+    ->  findall(X, ( member(d(Model, _, S, _, O), Delta),
+                     (   X = S
+                     ;   X = O
+                     ),
+                     atom(X)
+                   ), Resources0),
+        sort(Resources0, Resources),
+        findall(X-Ys, ( member(X, Resources),
+                        findall(Y, oro_same_individual(Model, X, Y), Ys)
+                      ), Pairs),
+        list_to_assoc(Pairs, Same)
+    ;   empty_assoc(Same)                   % each individual is itself only
+    ).
 
 %   triggered_watchers(+Model, +Added, +Removed, -Ids): the watchers
 %   depending on any change, and those a trigger of a changed triple

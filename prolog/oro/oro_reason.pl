@@ -7,6 +7,7 @@
             oro_property/3,             % +Model, ?Property, ?Kind
             oro_individual/2,           % +Model, ?X
             oro_same_individual/3,      % +Model, +X, -Y
+            oro_has_same_individuals/1, % +Model
             oro_functional_property/2,  % +Model, ?Property
             oro_transitive_property/2,  % +Model, ?Property
             oro_property_characteristic/3, % +Model, ?Property, ?Characteristic
@@ -1737,6 +1738,16 @@ oro_same_individual(Model, X0, Y) :-
     oro_resource(X0, X),
     schema(Model, Key),
     same(Key, X, Y).
+
+%!  oro_has_same_individuals(+Model) is semidet.
+%
+%   Some individual of Model has other names (owl:sameAs).  If not,
+%   oro_same_individual/3 gives every individual itself only.
+
+oro_has_same_individuals(Model) :-
+    schema(Model, Key),
+    s_same(Key, _, _),
+    !.
 
 %!  oro_functional_property(+Model, ?Property) is nondet.
 %
