@@ -16,8 +16,9 @@
     update, remove (of what add 1 added), check (asserted, inferred
     type, inferred property), find with 1 to 3 patterns, lookup,
     getInfos, the agents' findForAgent and addForAgent, 8 concurrent
-    clients, and the latency of a NEW_INSTANCE event with 1,000
-    watchers registered.  Median, p99 and maximum of each, the
+    clients, the latency of a NEW_INSTANCE event with 1,000 watchers
+    registered and, last, the rate of adds of 100 statements with two
+    requests in flight.  Median, p99 and maximum of each, the
     server's memory (VmRSS after the load, VmHWM at the end).
 
     The floors, measured in the same run: an echo server with oro's
@@ -306,11 +307,12 @@ server_figures(C, Port, Pid, EchoPort, Params, World, Figures) :-
     operations(C, Params, World, Echo, Ops),
     concurrency(Port, EchoPort, Params, World, Concurrent),
     event_figures(C, Params, World, Events),
+    pipelined_load(C, World, Pipelined),
     bench_memory(Pid, End),
     Figures = size{triples:Size, world:World.put(statements, Load.statements),
                    load:Load, memory_loaded:Loaded, memory_end:End,
                    echo:Echo, operations:Ops, concurrent:Concurrent,
-                   events:Events}.
+                   events:Events, pipelined:Pipelined}.
 
 		 /*******************************
 		 *          THE WORLD           *
@@ -494,6 +496,51 @@ load_world(Via, W, load{statements:N, seconds:Seconds, per_s:Rate, batch:Batch,
     bench_stats(FullMicros, Batch).
 
 full_batch(100-_).
+
+%   pipelined_load(+Conn, +World, -Pipelined): the rate of adds of 100
+%   statements when the client keeps two requests in flight, sending
+%   the next one before it reads the reply to the previous (ORO-SPEC
+%   lets a client pipeline; the server answers in order), so that the
+%   client's work and the server's overlap as they would with a
+%   perception module streaming its facts.  The statements are those of
+%   5,000 objects after the world's (about 20,000), made beforehand;
+%   measured last, after every other figure of the size.
+
+pipelined_load(C, W, pipelined{statements:N, seconds:Seconds, per_s:Rate,
+                               in_flight:InFlight}) :-
+    InFlight = 2,
+    progress("size ~D: pipelined adds", [W.size]),
+    From is W.objects + 1,
+    To is W.objects + 5000,
+    findall(S, ( between(From, To, I),
+                 object_statements(W, I, Ss),
+                 member(S, Ss)
+               ), Statements),
+    length(Statements, N),
+    bench_batches(Statements, 100, Batches),
+    bench_time(pipeline(C, Batches, 0, InFlight), Micros),
+    Seconds is Micros / 1.0e6,
+    Rate is N / max(1.0e-6, Seconds).
+
+%   pipeline(+Conn, +Batches, +Sent, +InFlight): send Batches, never
+%   more than InFlight unanswered, and read every reply.
+
+pipeline(C, [Batch|Batches], Sent, InFlight) :-
+    Sent < InFlight,
+    !,
+    bench_send(C, add, [Batch]),
+    Sent1 is Sent + 1,
+    pipeline(C, Batches, Sent1, InFlight).
+pipeline(_, [], 0, _) :-
+    !.
+pipeline(C, Batches, Sent, InFlight) :-
+    bench_receive(C, Reply, infinite),
+    (   Reply = ok(_)
+    ->  true
+    ;   throw(bench_failed(add, pipelined, Reply))
+    ),
+    Sent1 is Sent - 1,
+    pipeline(C, Batches, Sent1, InFlight).
 
 via_text(socket(_), "over the socket").
 via_text(in_process, "in this process").
@@ -1394,6 +1441,8 @@ table_rows(S, Rows) :-
              Assert, BeliefRow),
     stats_row('  a batch of 100 of the load (x echo)', S.load.batch,
               batch, Echo100, null, BatchRow),
+    rate_row('bulk add, 2 requests in flight (x rdf_assert)',
+             S.pipelined.per_s, Assert, PipelinedRow),
     rate_row('in process: bulk add, world load (x rdf_assert)',
              In.load.robot_per_s, Assert, InLoadRow),
     rate_row('in process: beliefs (x rdf_assert)', In.load.belief_per_s,
@@ -1404,7 +1453,8 @@ table_rows(S, Rows) :-
               null, null, C.echo.per_s, EchoClientsRow),
     event_row('event, 1000 watchers on its predicate', E.same, Echo1, SameRow),
     event_row('event, 1000 watchers elsewhere', E.other, Echo1, OtherRow),
-    append([ [EchoRow1, EchoRow100, ProbeRow, LoadRow, BeliefRow, BatchRow],
+    append([ [EchoRow1, EchoRow100, ProbeRow, LoadRow, BeliefRow, BatchRow,
+              PipelinedRow],
              OpRows,
              [InLoadRow, InBeliefRow],
              InRows,
@@ -1585,6 +1635,12 @@ target(Ref, _, _, _, _, _, target{target:Target, figure:Figure, pass:Pass, aim:A
 target(Ref, _, _, _, _, _, target{target:"bulk add: >= 100,000 statements/s (batches of 100)",
                                   figure:Figure, pass:Pass}) :-
     Rate = Ref.load.robot_per_s,
+    RateInt is integer(Rate),
+    format(string(Figure), "~D stmt/s", [RateInt]),
+    bool(Rate >= 100000, Pass).
+target(Ref, _, _, _, _, _, target{target:"bulk add, 2 requests in flight: >= 100,000 statements/s",
+                                  figure:Figure, pass:Pass}) :-
+    Rate = Ref.pipelined.per_s,
     RateInt is integer(Rate),
     format(string(Figure), "~D stmt/s", [RateInt]),
     bool(Rate >= 100000, Pass).
