@@ -1634,16 +1634,10 @@ target(Ref, _, _, _, _, _, target{target:Target, figure:Figure, pass:Pass, aim:A
     bool(Op.stats.median < 100, Aim).
 target(Ref, _, _, _, _, _, target{target:"bulk add: >= 100,000 statements/s (batches of 100)",
                                   figure:Figure, pass:Pass}) :-
-    Rate = Ref.load.robot_per_s,
-    RateInt is integer(Rate),
-    format(string(Figure), "~D stmt/s", [RateInt]),
-    bool(Rate >= 100000, Pass).
+    bulk_target(Ref.load.robot_per_s, Figure, Pass).
 target(Ref, _, _, _, _, _, target{target:"bulk add, 2 requests in flight: >= 100,000 statements/s",
                                   figure:Figure, pass:Pass}) :-
-    Rate = Ref.pipelined.per_s,
-    RateInt is integer(Rate),
-    format(string(Figure), "~D stmt/s", [RateInt]),
-    bool(Rate >= 100000, Pass).
+    bulk_target(Ref.pipelined.per_s, Figure, Pass).
 target(Ref, _, _, _, _, _, target{target:"event latency, 1000 watchers: median < 1 ms",
                                   figure:Figure, pass:Pass}) :-
     L = Ref.events.same.latency,
@@ -1695,6 +1689,13 @@ target(_, _, _, _, _, Scaling, target{target:Target, figure:Figure, pass:Pass}) 
     format(string(Target), "~D vs 100k, ~w: <= 2x", [Scaling.to, Row.label]),
     ratio_text(Row.ratio, Figure),
     bool(Row.ratio =< 2, Pass).
+
+%   bulk_target(+Rate, -Figure, -Pass): a bulk rate against its target.
+
+bulk_target(Rate, Figure, Pass) :-
+    RateInt is integer(Rate),
+    format(string(Figure), "~D stmt/s", [RateInt]),
+    bool(Rate >= 100000, Pass).
 
 bool(Goal, Bool) :-
     (   call(Goal)

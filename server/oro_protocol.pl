@@ -286,8 +286,7 @@ whole_request(Block, Limit, request(Method, Params)) :-
     sub_string(Block, Before, 7, 0, "\n#end#\n"),
     sub_atom_icasechk(Block, End, "#end#"),
     End =:= Before + 1,
-    \+ sub_atom_icasechk(Block, _, "\r"),
-    \+ sub_atom_icasechk(Block, _, "\u0000"),
+    plain_block(Block),
     utf8_decode(Block, Text),
     split_string(Text, "\n", "", [Method|Lines]),
     Method \== "",
@@ -446,12 +445,18 @@ read_block(source(In, Mode), Block) :-
 cut_block(Block, Tokens) :-
     (   Block == ""
     ->  Tokens = []
-    ;   \+ sub_atom_icasechk(Block, _, "\r"),     % the usual case
-        \+ sub_atom_icasechk(Block, _, "\u0000")
+    ;   plain_block(Block)                      % the usual case
     ->  split_string(Block, "\n", "", Lines),
         lines_tokens(Lines, Tokens)
     ;   general_block_tokens(Block, Tokens)
     ).
+
+%   plain_block(+Block): Block has no `\r` and no NUL, so its lines are
+%   what split_string/4 cuts at `\n`.
+
+plain_block(Block) :-
+    \+ sub_atom_icasechk(Block, _, "\r"),
+    \+ sub_atom_icasechk(Block, _, "\u0000").
 
 %   lines_tokens(+Lines, -Tokens): the tokens of a block without `\r`
 %   split on `\n` into Lines: a `nl` between two lines, empty texts

@@ -436,7 +436,6 @@ handle_request(request(_, Params), Context, Out) :-
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                Message)).
 handle_request(request(Method, _), Context, Out) :-
-    string_length(Method, 5),
     string_lower(Method, "close"),
     !,
     with_mutex(Context.mutex, oro_write_closing(Out)),

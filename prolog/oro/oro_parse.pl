@@ -131,8 +131,7 @@ plain_text(Text) :-
     one_part(Text, Specials).
 
 %   plain_specials(-Chars): `[]{}"'\` and the codes 1-31, as a string.
-%   local_specials(-Chars): those and `:#<^@`; local_separators(-Chars):
-%   those and a space.  (All computed at
+%   local_specials(-Chars): those and `:#<^@`.  (Both computed at
 %   compile time.  NUL cannot be in such a set: split_string/4 reads its
 %   separators up to the first NUL.)
 
@@ -143,17 +142,12 @@ term_expansion(local_specials(generated), local_specials(Specials)) :-
     plain_special_codes(Codes),
     append(Codes, `:#<^@`, Local),
     string_codes(Specials, Local).
-term_expansion(local_separators(generated), local_separators(Separators)) :-
-    plain_special_codes(Codes),
-    append(Codes, `:#<^@ `, Local),
-    string_codes(Separators, Local).
 
 plain_special_codes([0'[, 0'], 0'{, 0'}, 0'", 0'\', 0'\\|Controls]) :-
     numlist(1, 31, Controls).
 
 plain_specials(generated).
 local_specials(generated).
-local_separators(generated).
 
 %   one_part(+Text, +Separators): Text has none of Separators and no
 %   NUL.  SWI-Prolog 9.0.4's split_string/4 takes NUL for a separator
@@ -568,20 +562,12 @@ parse_statement(Text, Triple) :-
     ).
 
 local_statement(Text, rdf(S, P, O)) :-
-    local_separators(Separators),
-    split_string(Text, Separators, "", [ST, PT, OT]),
-    string_length(ST, L1),
-    L1 > 0,
-    string_length(PT, L2),
-    L2 > 0,
-    string_length(OT, L3),
-    L3 > 0,
-    string_length(Text, Length),
-    Length =:= L1 + L2 + L3 + 2,            % nothing padded away (NUL)
-    At1 is L1 + 1,
-    string_code(At1, Text, 0'\s),           % the two separators are spaces
-    At2 is At1 + L2 + 1,
-    string_code(At2, Text, 0'\s),
+    local_specials(Specials),
+    one_part(Text, Specials),
+    split_string(Text, " ", "", [ST, PT, OT]),
+    ST \== "",
+    PT \== "",
+    OT \== "",
     local_token(ST, Text, S),
     local_token(PT, Text, P),
     local_object_token(OT, Text, O).
