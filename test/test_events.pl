@@ -2406,6 +2406,53 @@ test(watched_among_unwatched_predicates,
                      add(["c2 hasColor green", "c3 isVisible true"]),
                      add(["c3 hasColor red", "t1 isUnder c2"])
                    ], Log).
+%   What a change records for the watcher thread: only the triples of
+%   predicates some watcher depends on (the store's agents watcher
+%   follows rdf:type), and no owl:sameAs table while the model has no
+%   such individuals.
+
+test(delta_of_followed_predicates_only,
+     [ true(Delta == [d(myself, add, C1, IsOn, T1)])
+     ]) :-
+    ev_inc_store,
+    rdf_global_id(oro:c1, C1),
+    rdf_global_id(oro:isOn, IsOn),
+    rdf_global_id(oro:t1, T1),
+    rdf_global_id(oro:hasColor, HasColor),
+    message_queue_create(Q),
+    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( oro_register_event(myself, "NEW_INSTANCE", "ON_TOGGLE", x,
+                             ["?x isOn t1"], Subscriber, _),
+          oro_events_sync,                      % nothing pending any more
+          Layer = profile(longterm),
+          oro_events:note_delta(myself, Layer, add, C1, HasColor, literal(red)),
+          oro_events:note_delta(myself, Layer, add, C1, IsOn, T1),
+          oro_events:take_delta(Delta)
+        ),
+        ( oro_subscriber_destroy(Subscriber),
+          message_queue_destroy(Q)
+        )).
+test(same_as_table_only_with_same_individuals,
+     [ true(Result == before(false, [])-after(true))
+     ]) :-
+    ev_inc_store,
+    rdf_global_id(oro:c1, C1),
+    rdf_global_id(oro:isOn, IsOn),
+    rdf_global_id(oro:t1, T1),
+    Delta = [d(myself, add, C1, IsOn, T1)],
+    oro_events:model_delta(myself, Delta, _, _, Same),
+    assoc_to_list(Same, Pairs0),
+    (   oro_reason:oro_has_same_individuals(myself)
+    ->  Has0 = true
+    ;   Has0 = false
+    ),
+    oro_add(myself, ["t2 owl:sameAs t1"]),
+    (   oro_reason:oro_has_same_individuals(myself)
+    ->  Has1 = true
+    ;   Has1 = false
+    ),
+    Result = before(Has0, Pairs0)-after(Has1).
 test(same_as_individuals,
      [ true(Log == [[], [1-[c1]], [1-[c1]]])
      ]) :-

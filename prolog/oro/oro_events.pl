@@ -377,9 +377,9 @@ graph_model(G, Model, Layer) :-
 %   change is then evaluated in full.  A triple of a model none of
 %   whose watchers depends on its predicate is not recorded: no watcher
 %   would look at it (concerned/3, triggered/6).  What the watchers
-%   depend on is read as relevant/1 reads it: while the watcher thread
-%   has registrations or schema changes to process, every triple is
-%   recorded.
+%   depend on is depended_on/2, which relevant/1 reads too; while the
+%   watcher thread has registrations or schema changes to process,
+%   every triple is recorded.
 
 note_delta(Model, Layer, Sign0, S, P, O) :-
     (   delta_overflow
@@ -399,10 +399,9 @@ note_delta(Model, Layer, Sign0, S, P, O) :-
 
 followed(Model, P) :-
     (   pending
-    ;   watcher_dep(Model, any, _)
-    ;   watcher_dep(Model, P, _)
-    ),
-    !.
+    ->  true
+    ;   depended_on(Model, P)
+    ).
 
 delta_sign(Model, Layer, Sign0, Sign) :-
     Model \== '$all',
@@ -478,7 +477,17 @@ pending :-
 relevant(Touched) :-
     member(Model-P, Touched),
     (   Model == '$all'
-    ;   watcher_dep(Model, any, _)
+    ->  true
+    ;   depended_on(Model, P)
+    ),
+    !.
+
+%   depended_on(+Model, +P): some watcher of Model depends on triples
+%   of predicate P (or on any change), as the watcher thread last
+%   indexed it (set_index/3).
+
+depended_on(Model, P) :-
+    (   watcher_dep(Model, any, _)
     ;   watcher_dep(Model, P, _)
     ),
     !.
