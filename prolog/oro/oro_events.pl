@@ -89,7 +89,8 @@ snapshot* (rdf_snapshot/1) until it is processed: while the watcher
 thread is behind a burst of writes, rdf_db keeps every triple version
 those snapshots may see.  Memory then grows with the backlog (not with
 the number of watchers) and is given back as it is processed;
-oro_events_sync/0 waits for it.
+oro_events_sync/0 waits for it.  (That a snapshot keeps every triple it
+may see relies on the store's GC pin: see oro_store.)
 
 ## Incremental evaluation
 

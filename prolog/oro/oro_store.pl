@@ -60,6 +60,25 @@ Every change runs in one rdf_transaction/2 under the `oro_write`
 mutex, so writes are serialised, atomic, and seen by rdf_monitor/2 as
 one change.  Changes to schema triples bump a generation counter that
 the reasoner uses to know when its schema closures are stale.
+
+## The GC pin
+
+rdf_db (SWI-Prolog 9.0.4) reclaims a deleted triple once no query or
+snapshot may still see it, but its garbage collector decides that from
+the oldest snapshot *when a pass starts*, and with no snapshot at all
+it takes every deleted triple for garbage, including the ones deleted
+while the pass runs.  A snapshot taken during such a pass then loses,
+from some index chains, the triples deleted after it was taken: rdf/3
+misses them in that snapshot though rdf/4 by subject finds them.  The
+event watchers read the snapshots of committed changes, and lost
+events that way (one run in a few hundred of the events stress test).
+
+This module therefore keeps one snapshot alive at all times, the *GC
+pin*: the collector then never counts as garbage a triple deleted after
+the pin was taken, so never one a later snapshot (or query) may see.
+The pin is renewed, under the `oro_write` mutex, after every write and
+reset, so it delays the reclaiming of a deleted triple until the next
+write at most; a rebuild lets go of it while rdf_db is reset.
 */
 
 :- thread_local
@@ -67,6 +86,7 @@ the reasoner uses to know when its schema closures are stale.
     maybe_unused/1.                 % IRI of a triple this write removed
 
 :- dynamic
+    gc_pin/1,                       % Snapshot (under the oro_write mutex)
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
     ontology_graph/1,               % Graph
@@ -261,6 +281,7 @@ oro_store_write(Action, Goal) :-
                        setup_call_cleanup(asserta(writing),
                                           ( store_write(Action, Goal),
                                             unindex_unused,
+                                            renew_gc_pin,
                                             note_garbage
                                           ),
                                           ( retractall(writing),
@@ -509,6 +530,7 @@ oro_store_reset :-
     with_mutex(oro_write,
                ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
+                 renew_gc_pin,
                  retractall(name_of(_, _)),
                  retractall(model_graph(_, _, _)),
                  retractall(model_alias(_, _)),
@@ -876,5 +898,25 @@ restore_graphs(Copies) :-
            )).
 
 reset_rdf_db :-
+    release_gc_pin,
     rdf_db:rdf_reset_db_,           % rdf_reset_db/0 without reset_gensym/1
+    renew_gc_pin,
     presize_indexes.
+
+%   renew_gc_pin: replace the GC pin (see the module's documentation) by
+%   a snapshot of now, taken before the old one is deleted, so that one
+%   is alive at every moment.  Called with the `oro_write` mutex held
+%   (or while the module loads).  A pin erased meanwhile by
+%   rdf_reset_db/0, called outside this module, is simply dropped.
+
+renew_gc_pin :-
+    rdf_snapshot(Pin),
+    release_gc_pin,
+    assertz(gc_pin(Pin)).
+
+release_gc_pin :-
+    forall(retract(gc_pin(Old)),
+           catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
+                 true)).
+
+:- initialization(with_mutex(oro_write, renew_gc_pin)).
