@@ -461,13 +461,23 @@ test(pin_renewed_by_each_write, true(Kept == none)) :-
 test(pin_after_rebuild, true(Kept == none)) :-
     assertion(oro_store_rebuild),
     st_kept_garbage(Kept).
+test(erased_pin_dropped, true(Kept == none)) :-
+    rdf_snapshot(Gone),                 % as rdf_reset_db/0 would leave it
+    rdf_delete_snapshot(Gone),
+    with_mutex(oro_write, asserta(oro_store:gc_pin(Gone))),
+    st_iri(gc_cup, S),
+    st_iri(isOn, P),
+    st_iri(gc_table, O),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
+    st_kept_garbage(Kept).
 
 %   st_kept_garbage(-Kept): `none` if a snapshot is alive (the pin) and
 %   yet, once rdf_db's GC has run, no deleted triple is kept: the pin is
 %   as new as the last write (which deleted nothing: a pin keeps the
-%   triples deleted by the write just before it).  rdf_gc_info_/1 is rdf_db's own account
-%   (total triples including deleted ones not reclaimed, garbage, ...,
-%   oldest generation a snapshot or query may read).
+%   triples deleted by the write just before it).  rdf_gc_info_/1 is
+%   rdf_db's own account: its first argument counts the triples not
+%   reclaimed, deleted or not; its fifth is the oldest generation a
+%   snapshot or query may read, GEN_MAX (2^63-1) when there is none.
 
 st_kept_garbage(Kept) :-
     rdf_gc,
