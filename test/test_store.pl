@@ -449,14 +449,56 @@ test(bad_ontology_index, error(type_error(positive_integer, 0))) :-
 
 test(snapshot_keeps_its_triples_while_gc_runs, Missed == 0) :-
     st_gc_race(5000, Missed).
-test(pin_renewed_by_each_write, true(Kept == none)) :-
+test(removal_reclaimed_after_next_write, true(Kept1-Kept2 == kept-none)) :-
     st_iri(gc_cup, S),
     st_iri(isOn, P),
     st_iri(gc_table, O),
     st_iri(gc_shelf, O2),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
     oro_store_write(test, oro_store_retract(myself, [rdf(S, P, O)])),
+    st_kept_garbage(Kept0),
+    functor(Kept0, Kept1, _),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
+    st_kept_garbage(Kept2).
+test(removals_in_a_row_reclaimed, true(Kept == none)) :-
+    st_iri(isOn, P),
+    st_iri(gc_table, O),
+    findall(rdf(S, P, O),
+            ( between(1, 3, I),
+              format(atom(Local), 'gc_row_~d', [I]),
+              st_iri(Local, S)
+            ),
+            Triples),
+    oro_store_write(test, oro_store_assert(myself, Triples, longterm)),
+    forall(member(Triple, Triples),
+           oro_store_write(test, oro_store_retract(myself, [Triple]))),
+    rdf_statistics(triples(Live)),
+    oro_events_sync,
+    rdf_gc,
+    rdf_db:rdf_gc_info_(Info),
+    arg(1, Info, Stored),
+    Kept0 is Stored - Live,             % the last removal's triple only
+    assertion(Kept0 =:= 1),
+    st_iri(gc_lamp, S2),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S2, P, O)], longterm)),
+    st_kept_garbage(Kept).
+test(pin_kept_by_adds, true(Pin == Pin0)) :-
+    st_iri(gc_mug, S),
+    st_iri(isOn, P),
+    st_iri(gc_table, O),
+    st_iri(gc_shelf, O2),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
+    oro_store:gc_pin(Pin0, _),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
+    oro_store:gc_pin(Pin, _).
+test(unmask_reclaimed_after_next_write, true(Kept == none)) :-
+    st_triple("Mug rdfs:subClassOf Container", Triple),
+    st_iri(gc_bowl, S),
+    st_iri(isOn, P),
+    st_iri(gc_table, O),
+    oro_store_write(test, oro_store_retract(myself, [Triple])),
+    oro_store_write(test, oro_store_assert(myself, [Triple], longterm)),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
     st_kept_garbage(Kept).
 test(pin_after_rebuild, true(Kept == none)) :-
     assertion(oro_store_rebuild),
@@ -464,22 +506,25 @@ test(pin_after_rebuild, true(Kept == none)) :-
 test(erased_pin_dropped, true(Kept == none)) :-
     rdf_snapshot(Gone),                 % as rdf_reset_db/0 would leave it
     rdf_delete_snapshot(Gone),
-    with_mutex(oro_write, asserta(oro_store:gc_pin(Gone))),
-    st_iri(gc_cup, S),
+    with_mutex(oro_write, asserta(oro_store:gc_pin(Gone, 0))),
+    st_iri(gc_plate, S),
     st_iri(isOn, P),
     st_iri(gc_table, O),
+    st_iri(gc_shelf, O2),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
+    oro_store_write(test, oro_store_retract(myself, [rdf(S, P, O)])),
+    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
     st_kept_garbage(Kept).
 
 %   st_kept_garbage(-Kept): `none` if a snapshot is alive (the pin) and
 %   yet, once rdf_db's GC has run, no deleted triple is kept: the pin is
-%   as new as the last write (which deleted nothing: a pin keeps the
-%   triples deleted by the write just before it).  rdf_gc_info_/1 is
+%   newer than the last write that deleted triples.  rdf_gc_info_/1 is
 %   rdf_db's own account: its first argument counts the triples not
 %   reclaimed, deleted or not; its fifth is the oldest generation a
 %   snapshot or query may read, GEN_MAX (2^63-1) when there is none.
 
 st_kept_garbage(Kept) :-
+    oro_events_sync,                    % the watcher lets go of its snapshots
     rdf_gc,
     rdf_db:rdf_gc_info_(Info),
     arg(1, Info, Stored),
@@ -563,3 +608,37 @@ st_gc_hammer(Passes) :-
     st_gc_hammer(Passes1).
 
 :- end_tests(store_gc_pin).
+
+%   Writes that only add leave no clause behind for SWI-Prolog's clause
+%   garbage collector (see oro_store, "Writes leave no clause behind"),
+%   here with the bundled ontology, whose agents module keeps a watcher
+%   (so the events monitor notes every write).  The names are all used
+%   once first, so that the name cache has them all.
+
+:- begin_tests(store_clause_churn, [setup(oro_init([])), cleanup(oro_init([]))]).
+
+test(adds_retract_no_clause, true(Reclaimed < 20)) :-
+    st_churn_adds(warm, _),
+    st_churn_adds(probe, Reclaimed).
+
+:- end_tests(store_clause_churn).
+
+%   st_churn_adds(+Tag, -Reclaimed): 200 writes adding one statement
+%   each (subjects Tag_I with I in 1..20, objects place_J with J in
+%   1..10); Reclaimed is what the clause collector reclaimed once they
+%   are done.
+
+st_churn_adds(Tag, Reclaimed) :-
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, Before),
+    forall(( between(1, 20, I),
+             between(1, 10, J)
+           ),
+           ( format(string(S), "churn_~w_~d isOn place_~d", [Tag, I, J]),
+             oro_add(myself, [S])
+           )),
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, After),
+    Reclaimed is After - Before.

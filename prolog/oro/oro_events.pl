@@ -173,16 +173,10 @@ and ranges.
     discarding/1,                   % Name of a subscriber being stopped
     pending_direct/3,               % Deliver, Id, Content
     model_schema/2,                 % Model, Key (the watcher thread's)
-    touched/2,                      % Model, Predicate  (thread_local use)
-    touched_schema/0,
-    in_commit/0,
     delta/5,                        % Model, add|del, S, P, O
     delta_overflow/0.
 
 :- thread_local
-    touched/2,
-    touched_schema/0,
-    in_commit/0,
     delta/5,
     delta_overflow/0.
 
@@ -291,6 +285,14 @@ call_watcher(Request, Reply, Options) :-
 
 %   monitor(+Event): called by rdf_db in the writing thread when a
 %   transaction commits.  It must stay cheap and never fail or throw.
+%   That a commit is in progress, and what it touched, are kept in the
+%   writing thread's global variables (oro_events_in_commit,
+%   oro_events_touched, oro_events_touched_schema), not in facts: a
+%   clause asserted and retracted by every write is work for
+%   SWI-Prolog's clause garbage collector, which then also runs atom GC
+%   (see oro_store, "Writes leave no clause behind").  The triples
+%   themselves (delta/5), noted only when a watcher follows their
+%   predicate, stay thread-local facts: there may be a thousand.
 
 :- public monitor/1.
 
@@ -301,13 +303,10 @@ monitor(_).
 
 monitor_(transaction(begin(0), _)) :-
     !,
-    (   in_commit
-    ->  true
-    ;   assertz(in_commit)
-    ).
+    nb_setval(oro_events_in_commit, true).
 monitor_(transaction(end(0), _)) :-
     !,
-    retractall(in_commit),
+    nb_setval(oro_events_in_commit, false),
     flush_changes.
 monitor_(transaction(_, _)) :-
     !.
@@ -340,17 +339,13 @@ note(Source, S, P, O, Sign) :-
     !,
     source_graph(Source, G),
     graph_model(G, Model, Layer),
-    (   touched(Model, P)
-    ->  true
-    ;   assertz(touched(Model, P))
-    ),
-    (   oro_schema_triple(P, O),
-        \+ touched_schema
-    ->  assertz(touched_schema)
+    touch(Model, P),
+    (   oro_schema_triple(P, O)
+    ->  nb_setval(oro_events_touched_schema, true)
     ;   true
     ),
     note_delta(Model, Layer, Sign, S, P, O),
-    (   in_commit
+    (   nb_current(oro_events_in_commit, true)
     ->  true
     ;   flush_changes                       % a write outside a transaction
     ).
@@ -358,6 +353,37 @@ note(_, _, _, _, _).
 
 source_graph(G:_, G) :- !.
 source_graph(G, G).
+
+%   touch(+Model, +P): note that the transaction changed a triple of P
+%   in Model.  The pairs noted are the writing thread's global variable
+%   oro_events_touched, in reverse order; there are few in a
+%   transaction (one per model and predicate).
+
+touch(Model, P) :-
+    (   nb_current(oro_events_touched, Touched)
+    ->  true
+    ;   Touched = []
+    ),
+    (   memberchk(Model-P, Touched)
+    ->  true
+    ;   nb_setval(oro_events_touched, [Model-P|Touched])
+    ).
+
+%   take_touched(-Touched, -Schema): the Model-P pairs noted in this
+%   transaction, in the order noted, and whether a schema triple
+%   changed; both are reset.
+
+take_touched(Touched, Schema) :-
+    (   nb_current(oro_events_touched, Touched0)
+    ->  reverse(Touched0, Touched)
+    ;   Touched = []
+    ),
+    (   nb_current(oro_events_touched_schema, true)
+    ->  Schema = true
+    ;   Schema = false
+    ),
+    nb_setval(oro_events_touched, []),
+    nb_setval(oro_events_touched_schema, false).
 
 graph_model(G, Model, Layer) :-
     (   oro_graph_layer(G, Model0, Layer0)
@@ -431,11 +457,7 @@ delta_room :-
     nb_setval(oro_events_delta_size, N).
 
 flush_changes :-
-    findall(M-P, retract(touched(M, P)), Touched),
-    (   retract(touched_schema)
-    ->  Schema = true
-    ;   Schema = false
-    ),
+    take_touched(Touched, Schema),
     take_delta(Delta),
     (   Touched == []
     ->  true

@@ -76,17 +76,33 @@ events that way (one run in a few hundred of the events stress test).
 This module therefore keeps one snapshot alive at all times, the *GC
 pin*: the collector then never counts as garbage a triple deleted after
 the pin was taken, so never one a later snapshot (or query) may see.
-The pin is renewed, under the `oro_write` mutex, after every write and
-reset, so it delays the reclaiming of a deleted triple until the next
-write at most; a rebuild lets go of it while rdf_db is reset.
+rdf_db reclaims a deleted triple only once every snapshot is *newer*
+than the generation that deleted it.  So a write that removes triples
+notes the generation it made, and the first write after it renews the
+pin, under the `oro_write` mutex: a deleted triple is reclaimed once
+the next write is done.  A reset does the same; a rebuild lets go of
+the pin while rdf_db is reset.  Writes that only add keep the pin.
+
+## Writes leave no clause behind
+
+A write that only adds asserts and retracts no clause of its own: that
+the calling thread is writing is its global variable
+`oro_store_writing`, not a thread-local fact, and the pin stays.
+Every clause retracted is work for SWI-Prolog's clause garbage
+collector.  Once a program has erased clauses it held references to
+(set_setting/2 and thread_pool_create/3 do, and the server calls both),
+SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
+run of that collector.  With three or four clauses retracted a write
+(here and in oro_events), a server adding one statement at a time ran
+both collectors every 12 writes, at a cost of 40 us a write
+(bench/RESULTS.md).
 */
 
 :- thread_local
-    writing/0,                      % this thread runs oro_store_write/2
     maybe_unused/1.                 % IRI of a triple this write removed
 
 :- dynamic
-    gc_pin/1,                       % Snapshot (under the oro_write mutex)
+    gc_pin/2,                       % Snapshot, Generation (oro_write mutex)
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
     ontology_graph/1,               % Graph
@@ -274,19 +290,32 @@ rdf_graph_count(Graph, N) :-
 %   method calling oro_add/2 twice is thus one change.
 
 oro_store_write(Action, Goal) :-
-    (   writing
+    (   nb_current(oro_store_writing, true)
     ->  rdf_transaction(Goal, oro(Action))
     ;   oro_store_read(
             with_mutex(oro_write,
-                       setup_call_cleanup(asserta(writing),
-                                          ( store_write(Action, Goal),
-                                            unindex_unused,
-                                            renew_gc_pin,
-                                            note_garbage
-                                          ),
-                                          ( retractall(writing),
-                                            retractall(maybe_unused(_))
-                                          ))))
+                       setup_call_cleanup(
+                           nb_setval(oro_store_writing, true),
+                           ( store_write(Action, Goal),
+                             after_write,
+                             note_garbage
+                           ),
+                           ( nb_setval(oro_store_writing, false),
+                             retractall(maybe_unused(_))
+                           ))))
+    ).
+
+%   after_write: once a write is committed, renew the GC pin if an
+%   earlier removal makes it due; if this write removed triples, drop
+%   the IRIs no triple mentions any more from the name index and note
+%   the removal (for the next write to renew the pin).
+
+after_write :-
+    renew_gc_pin_if_due,
+    (   maybe_unused(_)
+    ->  unindex_unused,
+        note_removal
+    ;   true
     ).
 
 %   A schema change bumps the generation when it is made (before other
@@ -331,7 +360,8 @@ assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
 
 assert_known(Graph, Mask, Model, Profile, S, P, O) :-
     (   rdf(S, P, O, Mask)
-    ->  rdf_retractall(S, P, O, Mask)
+    ->  note_maybe_unused(S, O),
+        rdf_retractall(S, P, O, Mask)
     ;   true
     ),
     (   Profile == longterm
@@ -506,6 +536,7 @@ oro_wipe_models :-
     with_mutex(oro_write,
                ( forall(retract(model_graph(Graph, _, _)),
                         rdf_unload_graph(Graph)),
+                 note_removal,
                  retractall(name_of(_, _)),
                  forall(ontology_graph(Onto), index_graph_names(Onto)),
                  retractall(model_alias(_, _)),
@@ -530,6 +561,7 @@ oro_store_reset :-
     with_mutex(oro_write,
                ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
+                 note_removal,
                  renew_gc_pin,
                  retractall(name_of(_, _)),
                  retractall(model_graph(_, _, _)),
@@ -643,17 +675,14 @@ note_maybe_unused(S, O) :-
 %   mentions any more.
 
 unindex_unused :-
-    (   maybe_unused(_)
-    ->  findall(R, retract(maybe_unused(R)), Rs0),
-        sort(Rs0, Rs),
-        forall(( member(R, Rs),
-                 \+ rdf(R, _, _),
-                 \+ rdf(_, _, R),
-                 \+ rdf_current_predicate(R)
-               ),
-               retractall(name_of(R, _)))
-    ;   true
-    ).
+    findall(R, retract(maybe_unused(R)), Rs0),
+    sort(Rs0, Rs),
+    forall(( member(R, Rs),
+             \+ rdf(R, _, _),
+             \+ rdf(_, _, R),
+             \+ rdf_current_predicate(R)
+           ),
+           retractall(name_of(R, _))).
 
 index_graph_names(Graph) :-
     forall(rdf(S, P, O, Graph),
@@ -900,22 +929,48 @@ restore_graphs(Copies) :-
 reset_rdf_db :-
     release_gc_pin,
     rdf_db:rdf_reset_db_,           % rdf_reset_db/0 without reset_gensym/1
+    flag(oro_store_removed, _, -1), % generations start again from 0
     renew_gc_pin,
     presize_indexes.
+
+%   note_removal: triples were removed, making the current generation:
+%   the GC pin is due for renewal once a later generation exists.
+
+note_removal :-
+    rdf_generation(Generation),
+    flag(oro_store_removed, _, Generation).
+
+%   renew_gc_pin_if_due: renew the GC pin if triples were removed since
+%   it was taken and the generation has moved on since then (a pin
+%   taken in the generation that removed them would still keep them).
+
+renew_gc_pin_if_due :-
+    flag(oro_store_removed, Removed, Removed),
+    (   gc_pin(_, Taken)
+    ->  (   Removed >= Taken,
+            rdf_generation(Now),
+            Now > Removed
+        ->  renew_gc_pin
+        ;   true
+        )
+    ;   renew_gc_pin
+    ).
 
 %   renew_gc_pin: replace the GC pin (see the module's documentation) by
 %   a snapshot of now, taken before the old one is deleted, so that one
 %   is alive at every moment.  Called with the `oro_write` mutex held
 %   (or while the module loads).  A pin erased meanwhile by
-%   rdf_reset_db/0, called outside this module, is simply dropped.
+%   rdf_reset_db/0, called outside this module, is simply dropped (and
+%   replaced once a write follows a removal).
 
 renew_gc_pin :-
     rdf_snapshot(Pin),
+    rdf_generation(Generation),
     release_gc_pin,
-    assertz(gc_pin(Pin)).
+    assertz(gc_pin(Pin, Generation)).
 
 release_gc_pin :-
-    forall(retract(gc_pin(Old)),
+    forall(retract(gc_pin(Old, _)),
            catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
                  true)).
 
