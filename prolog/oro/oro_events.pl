@@ -172,13 +172,7 @@ and ranges.
     callback_subscriber/2,          % Id, Subscriber
     discarding/1,                   % Name of a subscriber being stopped
     pending_direct/3,               % Deliver, Id, Content
-    model_schema/2,                 % Model, Key (the watcher thread's)
-    delta/5,                        % Model, add|del, S, P, O
-    delta_overflow/0.
-
-:- thread_local
-    delta/5,
-    delta_overflow/0.
+    model_schema/2.                 % Model, Key (the watcher thread's)
 
 %   Bounds of incremental evaluation: the triples a transaction may
 %   change and still be evaluated from its triples, and the seeds a
@@ -285,14 +279,14 @@ call_watcher(Request, Reply, Options) :-
 
 %   monitor(+Event): called by rdf_db in the writing thread when a
 %   transaction commits.  It must stay cheap and never fail or throw.
-%   That a commit is in progress, and what it touched, are kept in the
-%   writing thread's global variables (oro_events_in_commit,
-%   oro_events_touched, oro_events_touched_schema), not in facts: a
-%   clause asserted and retracted by every write is work for
-%   SWI-Prolog's clause garbage collector, which then also runs atom GC
-%   (see oro_store, "Writes leave no clause behind").  The triples
-%   themselves (delta/5), noted only when a watcher follows their
-%   predicate, stay thread-local facts: there may be a thousand.
+%   What a commit notes is kept by the writing thread, in its global
+%   variables (oro_events_in_commit, oro_events_touched,
+%   oro_events_touched_schema, and the delta's size and overflow) and,
+%   for the triples of the delta, in a message queue of its own (see
+%   delta_queue/1), not in facts: a clause asserted and retracted by
+%   every write, or every triple, is work for SWI-Prolog's clause
+%   garbage collector, which then also runs atom GC (see oro_store,
+%   "Writes leave no clause behind").
 
 :- public monitor/1.
 
@@ -409,7 +403,7 @@ graph_model(G, Model, Layer) :-
 %   every triple is recorded.
 
 note_delta(Model, Layer, Sign0, S, P, O) :-
-    (   delta_overflow
+    (   nb_current(oro_events_delta_overflow, true)
     ->  true
     ;   Model == '$none'
     ->  true
@@ -418,10 +412,33 @@ note_delta(Model, Layer, Sign0, S, P, O) :-
     ->  true
     ;   delta_sign(Model, Layer, Sign0, Sign),
         delta_room
-    ->  assertz(delta(Model, Sign, S, P, O))
-    ;   retractall(delta(_, _, _, _, _)),
+    ->  delta_queue(Queue),
+        thread_send_message(Queue, d(Model, Sign, S, P, O))
+    ;   delta_queue(Queue),
+        drain_queue(Queue, _),
         nb_setval(oro_events_delta_size, 0),
-        assertz(delta_overflow)
+        nb_setval(oro_events_delta_overflow, true)
+    ).
+
+%   delta_queue(-Queue): the writing thread's queue of the triples noted
+%   in the current transaction, made on its first use (an anonymous
+%   queue, reclaimed with the thread's global variables).
+
+delta_queue(Queue) :-
+    (   nb_current(oro_events_delta_queue, Queue0)
+    ->  Queue = Queue0
+    ;   message_queue_create(Queue),
+        nb_setval(oro_events_delta_queue, Queue)
+    ).
+
+%   drain_queue(+Queue, -Messages): take every message of Queue, oldest
+%   first, without waiting.
+
+drain_queue(Queue, Messages) :-
+    (   thread_get_message(Queue, Message, [timeout(0)])
+    ->  Messages = [Message|Rest],
+        drain_queue(Queue, Rest)
+    ;   Messages = []
     ).
 
 followed(Model, P) :-
@@ -481,9 +498,12 @@ flush_changes :-
 
 take_delta(Delta) :-
     nb_setval(oro_events_delta_size, 0),
-    (   retract(delta_overflow)
-    ->  Delta = full
-    ;   findall(d(M, Sign, S, P, O), retract(delta(M, Sign, S, P, O)), Delta)
+    (   nb_current(oro_events_delta_overflow, true)
+    ->  nb_setval(oro_events_delta_overflow, false),
+        Delta = full
+    ;   nb_current(oro_events_delta_queue, Queue)
+    ->  drain_queue(Queue, Delta)
+    ;   Delta = []
     ).
 
 %   A change that no watcher depends on is not sent at all.  The
