@@ -6,6 +6,7 @@
             test_find/4,                % +Model, +Var, +Patterns, -Names
             test_names/2,               % +IRIs, -Names
             test_bool/2,                % :Goal, -Bool
+            test_churn_adds/2,          % +Tag, -Reclaimed
             test_literal/3,             % +Type, +Lex, -Literal
             test_wait_until/2,          % :Condition, +Seconds
             test_server_start/1,        % +Options
@@ -143,6 +144,31 @@ test_checkout_path(Relative, Path) :-
 test_store_testsuite :-
     test_fixture('testsuite.ttl', File),
     oro_init([commonsense(false), ontologies([File])]).
+
+%!  test_churn_adds(+Tag, -Reclaimed) is det.
+%
+%   Add 200 statements to the robot's model, one write each: subjects
+%   churn_Tag_I (I in 1..20), `isOn`, objects place_J (J in 1..10).
+%   Reclaimed is the number of clauses SWI-Prolog's clause garbage
+%   collector reclaimed once they are done and the watchers have seen
+%   them: the clauses the writes retracted (see oro_store, "Writes leave
+%   no clause behind").  Call it once with another Tag first, so that
+%   the name cache already holds every name.
+
+test_churn_adds(Tag, Reclaimed) :-
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, Before),
+    forall(( between(1, 20, I),
+             between(1, 10, J)
+           ),
+           ( format(string(S), "churn_~w_~d isOn place_~d", [Tag, I, J]),
+             oro_add(myself, [S])
+           )),
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, After),
+    Reclaimed is After - Before.
 
 %!  test_find(+Model, +Var, +Patterns, -Names) is det.
 %

@@ -769,3 +769,19 @@ test(events_keep_working,
                    )).
 
 :- end_tests(consistency_inconsistent_model).
+
+%   Once a verdict was remembered, the delta log's monitor notes every
+%   commit: that leaves no clause behind for the clause garbage
+%   collector (see oro_store, "Writes leave no clause behind").
+
+:- begin_tests(consistency_clause_churn,
+               [ setup(oro_init([])),
+                 cleanup(oro_init([]))
+               ]).
+
+test(logged_adds_retract_no_clause, true(Reclaimed < 20)) :-
+    assertion(oro_consistent(myself)),
+    test_churn_adds(warm, _),
+    test_churn_adds(probe, Reclaimed).
+
+:- end_tests(consistency_clause_churn).

@@ -2502,8 +2502,7 @@ test(large_change_evaluated_in_full,
 
 %   A watcher following a predicate makes the events monitor note each
 %   triple of it a write adds: that leaves no clause behind for the
-%   clause garbage collector either (see the monitor's comment).  The
-%   names are all used once first, so that the name cache has them.
+%   clause garbage collector either (see the monitor's comment).
 
 :- begin_tests(events_clause_churn,
                [ setup(ev_init_testsuite),
@@ -2516,29 +2515,9 @@ test(followed_adds_retract_no_clause, [ setup(oro_reset),
     message_queue_create(Queue),
     oro_subscribe(myself, new_instance, on_true, x, ["?x isOn place_1"],
                   ev_to_queue(Queue, t), _),
-    ev_churn_adds(warm, _),
-    ev_churn_adds(probe, Reclaimed),
+    test_churn_adds(warm, _),
+    test_churn_adds(probe, Reclaimed),
     assertion(ev_get(Queue, ev(t, _, _))),
     message_queue_destroy(Queue).
 
 :- end_tests(events_clause_churn).
-
-%   ev_churn_adds(+Tag, -Reclaimed): 200 writes adding one statement each
-%   (subjects churn_Tag_I with I in 1..20, objects place_J with J in
-%   1..10, every one followed by the watcher); Reclaimed is what the
-%   clause collector reclaimed once they are done and evaluated.
-
-ev_churn_adds(Tag, Reclaimed) :-
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, Before),
-    forall(( between(1, 20, I),
-             between(1, 10, J)
-           ),
-           ( format(string(S), "churn_~w_~d isOn place_~d", [Tag, I, J]),
-             oro_add(myself, [S])
-           )),
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, After),
-    Reclaimed is After - Before.

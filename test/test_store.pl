@@ -612,33 +612,12 @@ st_gc_hammer(Passes) :-
 %   Writes that only add leave no clause behind for SWI-Prolog's clause
 %   garbage collector (see oro_store, "Writes leave no clause behind"),
 %   here with the bundled ontology, whose agents module keeps a watcher
-%   (so the events monitor notes every write).  The names are all used
-%   once first, so that the name cache has them all.
+%   (so the events monitor notes every write).
 
 :- begin_tests(store_clause_churn, [setup(oro_init([])), cleanup(oro_init([]))]).
 
 test(adds_retract_no_clause, true(Reclaimed < 20)) :-
-    st_churn_adds(warm, _),
-    st_churn_adds(probe, Reclaimed).
+    test_churn_adds(warm, _),
+    test_churn_adds(probe, Reclaimed).
 
 :- end_tests(store_clause_churn).
-
-%   st_churn_adds(+Tag, -Reclaimed): 200 writes adding one statement
-%   each (subjects Tag_I with I in 1..20, objects place_J with J in
-%   1..10); Reclaimed is what the clause collector reclaimed once they
-%   are done.
-
-st_churn_adds(Tag, Reclaimed) :-
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, Before),
-    forall(( between(1, 20, I),
-             between(1, 10, J)
-           ),
-           ( format(string(S), "churn_~w_~d isOn place_~d", [Tag, I, J]),
-             oro_add(myself, [S])
-           )),
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, After),
-    Reclaimed is After - Before.

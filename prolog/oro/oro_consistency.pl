@@ -498,9 +498,6 @@ remember_after(Model, Gen0, Verdict) :-
     logged/6,                       % Generation, Model, add|del, S, P, O
     log_monitor_started/0.
 
-:- thread_local
-    committing/1.                   % Generation being logged, or none
-
 max_log(20000).
 
 %   logged_changes(+Model, +Gen0, +Gen, -Added, -Removed) is semidet:
@@ -605,26 +602,26 @@ log_failed(E) :-
 
 log_event(transaction(begin(0), _)) :-
     !,
-    retractall(committing(_)),
     rdf_generation(G),
     generation_base(G, Base),
     (   log_boundary(Base)
     ->  Next is Base + 1,
-        assertz(committing(Next))
-    ;   assertz(committing(none))
+        set_committing(Next)
+    ;   set_committing(none)
     ).
 log_event(transaction(end(0), _)) :-
     !,
-    (   retract(committing(Next)),
+    (   committing(Next),
         integer(Next)
-    ->  rdf_generation(G),
+    ->  set_committing(outside),
+        rdf_generation(G),
         (   integer(G),
             G >= Next - 1,                  % Next - 1: nothing changed
             G =< Next
         ->  flag(oro_consistency_log_done, _, G)
         ;   log_off
         )
-    ;   retractall(committing(_))
+    ;   set_committing(outside)
     ).
 log_event(transaction(_, _)) :-
     !.
@@ -636,6 +633,20 @@ log_event(retract(S, P, O, Source)) :-
     log_triple(del, S, P, O, Source).
 log_event(_) :-                         % update, load, reset
     log_off_now.
+
+%   committing(-Next): a transaction is being committed, whose changes
+%   are logged as those of generation Next (`none`: not logged).  What
+%   the writing thread commits is its global variable
+%   oro_consistency_committing (`outside` between commits), not a
+%   fact: a clause retracted by every write is work for the clause
+%   garbage collector (see oro_store, "Writes leave no clause behind").
+
+committing(Next) :-
+    nb_current(oro_consistency_committing, Next),
+    Next \== outside.
+
+set_committing(Next) :-
+    nb_setval(oro_consistency_committing, Next).
 
 %   Inside a transaction being committed, the generation is Base+N.
 
@@ -692,8 +703,8 @@ log_off_now :-
     ->  log_off
     ;   true
     ),
-    (   retract(committing(_))
-    ->  assertz(committing(none))
+    (   committing(_)
+    ->  set_committing(none)
     ;   true
     ).
 
