@@ -488,9 +488,9 @@ test(pin_kept_by_adds, true(Pin == Pin0)) :-
     st_iri(gc_table, O),
     st_iri(gc_shelf, O2),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
-    oro_store:gc_pin(Pin0, _),
+    thread_peek_message(oro_gc_pin, gc_pin(Pin0, _)),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
-    oro_store:gc_pin(Pin, _).
+    thread_peek_message(oro_gc_pin, gc_pin(Pin, _)).
 test(unmask_reclaimed_after_next_write, true(Kept == none)) :-
     st_triple("Mug rdfs:subClassOf Container", Triple),
     st_iri(gc_bowl, S),
@@ -506,7 +506,7 @@ test(pin_after_rebuild, true(Kept == none)) :-
 test(erased_pin_dropped, true(Kept == none)) :-
     rdf_snapshot(Gone),                 % as rdf_reset_db/0 would leave it
     rdf_delete_snapshot(Gone),
-    with_mutex(oro_write, asserta(oro_store:gc_pin(Gone, 0))),
+    with_mutex(oro_write, thread_send_message(oro_gc_pin, gc_pin(Gone, 0))),
     st_iri(gc_plate, S),
     st_iri(isOn, P),
     st_iri(gc_table, O),
@@ -619,5 +619,20 @@ st_gc_hammer(Passes) :-
 test(adds_retract_no_clause, true(Reclaimed < 20)) :-
     test_churn_adds(warm, _),
     test_churn_adds(probe, Reclaimed).
+test(removals_retract_no_clause, true(Reclaimed < 20)) :-
+    test_churn_adds(removed, _),
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, Before),
+    forall(( between(1, 20, I),
+             between(1, 9, J)                   % place_10 stays: no name goes
+           ),
+           ( format(string(S), "churn_removed_~d isOn place_~d", [I, J]),
+             oro_remove(myself, [S])
+           )),
+    oro_events_sync,
+    garbage_collect_clauses,
+    statistics(cgc_gained, After),
+    Reclaimed is After - Before.
 
 :- end_tests(store_clause_churn).

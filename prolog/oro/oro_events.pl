@@ -432,11 +432,14 @@ delta_queue(Queue) :-
     ).
 
 %   drain_queue(+Queue, -Messages): take every message of Queue, oldest
-%   first, without waiting.
+%   first, without waiting (only this thread reads Queue: a message
+%   peeked at is there to take; see oro_store's release_gc_pin/0 for
+%   why not thread_get_message/3 with timeout(0)).
 
 drain_queue(Queue, Messages) :-
-    (   thread_get_message(Queue, Message, [timeout(0)])
-    ->  Messages = [Message|Rest],
+    (   thread_peek_message(Queue, Message)
+    ->  thread_get_message(Queue, Message),
+        Messages = [Message|Rest],
         drain_queue(Queue, Rest)
     ;   Messages = []
     ).

@@ -85,24 +85,23 @@ the pin while rdf_db is reset.  Writes that only add keep the pin.
 
 ## Writes leave no clause behind
 
-A write that only adds asserts and retracts no clause of its own: that
-the calling thread is writing is its global variable
-`oro_store_writing`, not a thread-local fact, and the pin stays.
+A write asserts and retracts no clause of its own (but for the names
+of IRIs it leaves unused): what it notes as it runs is kept in the
+writing thread's global variables (`oro_store_writing`,
+`oro_store_maybe_unused`), not in thread-local facts, and the GC pin is
+a message in a queue.  The events monitor and the consistency log do
+the same.
+
 Every clause retracted is work for SWI-Prolog's clause garbage
 collector.  Once a program has erased clauses it held references to
 (set_setting/2 and thread_pool_create/3 do, and the server calls both),
 SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
-run of that collector.  With three or four clauses retracted a write
-(here and in oro_events), a server adding one statement at a time ran
-both collectors every 12 writes, at a cost of 40 us a write
-(bench/RESULTS.md).
+run of that collector.  With three or four clauses retracted a write,
+a server adding one statement at a time ran both collectors every 12
+writes, at a cost of 40 us a write (bench/RESULTS.md).
 */
 
-:- thread_local
-    maybe_unused/1.                 % IRI of a triple this write removed
-
 :- dynamic
-    gc_pin/2,                       % Snapshot, Generation (oro_write mutex)
     model_graph/3,                  % Graph, Model, Layer
     model_alias/2,                  % Alias, Model
     ontology_graph/1,               % Graph
@@ -301,7 +300,7 @@ oro_store_write(Action, Goal) :-
                              note_garbage
                            ),
                            ( nb_setval(oro_store_writing, false),
-                             retractall(maybe_unused(_))
+                             nb_setval(oro_store_maybe_unused, [])
                            ))))
     ).
 
@@ -312,7 +311,7 @@ oro_store_write(Action, Goal) :-
 
 after_write :-
     renew_gc_pin_if_due,
-    (   maybe_unused(_)
+    (   nb_current(oro_store_maybe_unused, [_|_])
     ->  unindex_unused,
         note_removal
     ;   true
@@ -360,7 +359,7 @@ assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
 
 assert_known(Graph, Mask, Model, Profile, S, P, O) :-
     (   rdf(S, P, O, Mask)
-    ->  note_maybe_unused(S, O),
+    ->  note_maybe_unused([rdf(S, P, O)]),
         rdf_retractall(S, P, O, Mask)
     ;   true
     ),
@@ -393,9 +392,9 @@ forever(Model, S, P, O) :-
 
 oro_store_forget(Model, Profile, Triples) :-
     oro_graph(Model, profile(Profile), Graph),
+    note_maybe_unused(Triples),
     forall(member(rdf(S, P, O), Triples),
            ( note_schema_change(P, O),
-             note_maybe_unused(S, O),
              rdf_retractall(S, P, O, Graph)
            )).
 
@@ -407,11 +406,11 @@ oro_store_forget(Model, Profile, Triples) :-
 
 oro_store_retract(Model, Triples) :-
     oro_graph(Model, mask, Mask),
+    note_maybe_unused(Triples),
     maplist(retract_triple(Model, Mask), Triples).
 
 retract_triple(Model, Mask, rdf(S, P, O)) :-
     note_schema_change(P, O),
-    note_maybe_unused(S, O),
     forall(model_graph(Graph, Model, profile(_)),
            rdf_retractall(S, P, O, Graph)),
     (   ontology_graph(Onto),
@@ -664,18 +663,33 @@ index_name(R) :-
         assertz(name_of(R, Lower))
     ).
 
-note_maybe_unused(S, O) :-
-    assertz(maybe_unused(S)),
-    (   atom(O)
-    ->  assertz(maybe_unused(O))
-    ;   true
-    ).
+%   note_maybe_unused(+Triples): this write removes Triples, whose
+%   subjects and objects may be mentioned by no triple once it is done.
+%   They are kept, unsorted, in the writing thread's global variable
+%   oro_store_maybe_unused (see "Writes leave no clause behind"), one
+%   update per call.
+
+note_maybe_unused(Triples) :-
+    findall(R, ( member(rdf(S, _, O), Triples),
+                 (   R = S
+                 ;   atom(O),
+                     R = O
+                 )
+               ),
+            New),
+    (   nb_current(oro_store_maybe_unused, Old)
+    ->  true
+    ;   Old = []
+    ),
+    append(New, Old, All),
+    nb_setval(oro_store_maybe_unused, All).
 
 %   unindex_unused: after a committed write, drop the IRIs no triple
 %   mentions any more.
 
 unindex_unused :-
-    findall(R, retract(maybe_unused(R)), Rs0),
+    nb_getval(oro_store_maybe_unused, Rs0),
+    nb_setval(oro_store_maybe_unused, []),
     sort(Rs0, Rs),
     forall(( member(R, Rs),
              \+ rdf(R, _, _),
@@ -946,7 +960,7 @@ note_removal :-
 
 renew_gc_pin_if_due :-
     flag(oro_store_removed, Removed, Removed),
-    (   gc_pin(_, Taken)
+    (   thread_peek_message(oro_gc_pin, gc_pin(_, Taken))
     ->  (   Removed >= Taken,
             rdf_generation(Now),
             Now > Removed
@@ -967,11 +981,32 @@ renew_gc_pin :-
     rdf_snapshot(Pin),
     rdf_generation(Generation),
     release_gc_pin,
-    assertz(gc_pin(Pin, Generation)).
+    thread_send_message(oro_gc_pin, gc_pin(Pin, Generation)).
 
 release_gc_pin :-
-    forall(retract(gc_pin(Old, _)),
-           catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
-                 true)).
+    (   thread_peek_message(oro_gc_pin, Pin)
+    ->  thread_get_message(oro_gc_pin, Pin),
+        Pin = gc_pin(Old, _),
+        catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
+              true),
+        release_gc_pin
+    ;   true
+    ).
 
-:- initialization(with_mutex(oro_write, renew_gc_pin)).
+%   The pin is the one message gc_pin(Snapshot, Generation) of the
+%   queue oro_gc_pin, which only the holder of the `oro_write` mutex
+%   changes: a message queue, unlike a fact, leaves nothing for the
+%   clause garbage collector when the pin is replaced.  A message is
+%   peeked at before it is taken: thread_get_message/3 with
+%   timeout(0) was seen to spin for ever in SWI-Prolog 9.0.4 (while
+%   this module loads).
+
+:- initialization(( gc_pin_queue,
+                    with_mutex(oro_write, renew_gc_pin)
+                  )).
+
+gc_pin_queue :-
+    (   catch(message_queue_property(_, alias(oro_gc_pin)), _, fail)
+    ->  true                            % the module was loaded again
+    ;   message_queue_create(_, [alias(oro_gc_pin)])
+    ).
