@@ -482,15 +482,15 @@ test(removals_in_a_row_reclaimed, true(Kept == none)) :-
     st_iri(gc_lamp, S2),
     oro_store_write(test, oro_store_assert(myself, [rdf(S2, P, O)], longterm)),
     st_kept_garbage(Kept).
-test(pin_kept_by_adds, true(Pin == Pin0)) :-
+test(pin_renewed_by_each_write, true(Pin \== Pin0)) :-
     st_iri(gc_mug, S),
     st_iri(isOn, P),
     st_iri(gc_table, O),
     st_iri(gc_shelf, O2),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
-    thread_peek_message(oro_gc_pin, gc_pin(Pin0, _)),
+    thread_peek_message(oro_gc_pin, gc_pin(Pin0)),
     oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
-    thread_peek_message(oro_gc_pin, gc_pin(Pin, _)).
+    thread_peek_message(oro_gc_pin, gc_pin(Pin)).
 test(unmask_reclaimed_after_next_write, true(Kept == none)) :-
     st_triple("Mug rdfs:subClassOf Container", Triple),
     st_iri(gc_bowl, S),
@@ -506,7 +506,7 @@ test(pin_after_rebuild, true(Kept == none)) :-
 test(erased_pin_dropped, true(Kept == none)) :-
     rdf_snapshot(Gone),                 % as rdf_reset_db/0 would leave it
     rdf_delete_snapshot(Gone),
-    with_mutex(oro_write, thread_send_message(oro_gc_pin, gc_pin(Gone, 0))),
+    with_mutex(oro_write, thread_send_message(oro_gc_pin, gc_pin(Gone))),
     st_iri(gc_plate, S),
     st_iri(isOn, P),
     st_iri(gc_table, O),

@@ -76,12 +76,11 @@ events that way (one run in a few hundred of the events stress test).
 This module therefore keeps one snapshot alive at all times, the *GC
 pin*: the collector then never counts as garbage a triple deleted after
 the pin was taken, so never one a later snapshot (or query) may see.
-rdf_db reclaims a deleted triple only once every snapshot is *newer*
-than the generation that deleted it.  So a write that removes triples
-notes the generation it made, and the first write after it renews the
-pin, under the `oro_write` mutex: a deleted triple is reclaimed once
-the next write is done.  A reset does the same; a rebuild lets go of
-the pin while rdf_db is reset.  Writes that only add keep the pin.
+The pin is renewed, under the `oro_write` mutex, after every write and
+reset, so it delays the reclaiming of a deleted triple until the next
+write at most (rdf_db reclaims a triple once every snapshot is newer
+than the generation that deleted it); a rebuild lets go of it while
+rdf_db is reset.
 
 ## Writes leave no clause behind
 
@@ -89,8 +88,8 @@ A write asserts and retracts no clause of its own (but for the names
 of IRIs it leaves unused): what it notes as it runs is kept in the
 writing thread's global variables (`oro_store_writing`,
 `oro_store_maybe_unused`), not in thread-local facts, and the GC pin is
-a message in a queue.  The events monitor and the consistency log do
-the same.
+the one message of a queue.  The events monitor and the consistency
+log do the same.
 
 Every clause retracted is work for SWI-Prolog's clause garbage
 collector.  Once a program has erased clauses it held references to
@@ -304,18 +303,16 @@ oro_store_write(Action, Goal) :-
                            ))))
     ).
 
-%   after_write: once a write is committed, renew the GC pin if an
-%   earlier removal makes it due; if this write removed triples, drop
-%   the IRIs no triple mentions any more from the name index and note
-%   the removal (for the next write to renew the pin).
+%   after_write: once a write is committed, drop the IRIs no triple
+%   mentions any more from the name index, if it removed triples, and
+%   renew the GC pin.
 
 after_write :-
-    renew_gc_pin_if_due,
     (   nb_current(oro_store_maybe_unused, [_|_])
-    ->  unindex_unused,
-        note_removal
+    ->  unindex_unused
     ;   true
-    ).
+    ),
+    renew_gc_pin.
 
 %   A schema change bumps the generation when it is made (before other
 %   threads can see it) and again once the transaction is over,
@@ -359,8 +356,7 @@ assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
 
 assert_known(Graph, Mask, Model, Profile, S, P, O) :-
     (   rdf(S, P, O, Mask)
-    ->  note_maybe_unused([rdf(S, P, O)]),
-        rdf_retractall(S, P, O, Mask)
+    ->  rdf_retractall(S, P, O, Mask)
     ;   true
     ),
     (   Profile == longterm
@@ -535,7 +531,6 @@ oro_wipe_models :-
     with_mutex(oro_write,
                ( forall(retract(model_graph(Graph, _, _)),
                         rdf_unload_graph(Graph)),
-                 note_removal,
                  retractall(name_of(_, _)),
                  forall(ontology_graph(Onto), index_graph_names(Onto)),
                  retractall(model_alias(_, _)),
@@ -560,7 +555,6 @@ oro_store_reset :-
     with_mutex(oro_write,
                ( forall(rdf_graph(Graph), rdf_unload_graph(Graph)),
                  presize_indexes,
-                 note_removal,
                  renew_gc_pin,
                  retractall(name_of(_, _)),
                  retractall(model_graph(_, _, _)),
@@ -943,57 +937,31 @@ restore_graphs(Copies) :-
 reset_rdf_db :-
     release_gc_pin,
     rdf_db:rdf_reset_db_,           % rdf_reset_db/0 without reset_gensym/1
-    flag(oro_store_removed, _, -1), % generations start again from 0
     renew_gc_pin,
     presize_indexes.
-
-%   note_removal: triples were removed, making the current generation:
-%   the GC pin is due for renewal once a later generation exists.
-
-note_removal :-
-    rdf_generation(Generation),
-    flag(oro_store_removed, _, Generation).
-
-%   renew_gc_pin_if_due: renew the GC pin if triples were removed since
-%   it was taken and the generation has moved on since then (a pin
-%   taken in the generation that removed them would still keep them).
-
-renew_gc_pin_if_due :-
-    flag(oro_store_removed, Removed, Removed),
-    (   thread_peek_message(oro_gc_pin, gc_pin(_, Taken))
-    ->  (   Removed >= Taken,
-            rdf_generation(Now),
-            Now > Removed
-        ->  renew_gc_pin
-        ;   true
-        )
-    ;   renew_gc_pin
-    ).
 
 %   renew_gc_pin: replace the GC pin (see the module's documentation) by
 %   a snapshot of now, taken before the old one is deleted, so that one
 %   is alive at every moment.  Called with the `oro_write` mutex held
 %   (or while the module loads).  A pin erased meanwhile by
-%   rdf_reset_db/0, called outside this module, is simply dropped (and
-%   replaced once a write follows a removal).
+%   rdf_reset_db/0, called outside this module, is simply dropped.
 
 renew_gc_pin :-
     rdf_snapshot(Pin),
-    rdf_generation(Generation),
     release_gc_pin,
-    thread_send_message(oro_gc_pin, gc_pin(Pin, Generation)).
+    thread_send_message(oro_gc_pin, gc_pin(Pin)).
 
 release_gc_pin :-
     (   thread_peek_message(oro_gc_pin, Pin)
     ->  thread_get_message(oro_gc_pin, Pin),
-        Pin = gc_pin(Old, _),
+        Pin = gc_pin(Old),
         catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
               true),
         release_gc_pin
     ;   true
     ).
 
-%   The pin is the one message gc_pin(Snapshot, Generation) of the
+%   The pin is the one message gc_pin(Snapshot) of the
 %   queue oro_gc_pin, which only the holder of the `oro_write` mutex
 %   changes: a message queue, unlike a fact, leaves nothing for the
 %   clause garbage collector when the pin is replaced.  A message is
