@@ -7,6 +7,7 @@
             test_names/2,               % +IRIs, -Names
             test_bool/2,                % :Goal, -Bool
             test_churn_adds/2,          % +Tag, -Reclaimed
+            test_reclaimed/2,           % :Goal, -Reclaimed
             test_literal/3,             % +Type, +Lex, -Literal
             test_wait_until/2,          % :Condition, +Seconds
             test_server_start/1,        % +Options
@@ -90,6 +91,7 @@ user:file_search_path(library, Lib) :-
 
 :- meta_predicate
     test_bool(0, -),
+    test_reclaimed(0, -),
     test_wait_until(0, +),
     test_connected(-, 0),
     test_cli_server(+, -, 0, -).
@@ -145,30 +147,39 @@ test_store_testsuite :-
     test_fixture('testsuite.ttl', File),
     oro_init([commonsense(false), ontologies([File])]).
 
-%!  test_churn_adds(+Tag, -Reclaimed) is det.
+%!  test_reclaimed(:Goal, -Reclaimed) is det.
 %
-%   Add 200 statements to the robot's model, one write each: subjects
-%   churn_Tag_I (I in 1..20), `isOn`, objects place_J (J in 1..10).
-%   Reclaimed is the number of clauses SWI-Prolog's clause garbage
-%   collector reclaimed once they are done and the watchers have seen
-%   them: the clauses the writes retracted (see oro_store, "Writes leave
-%   no clause behind").  Call it once with another Tag first, so that
-%   the name cache already holds every name.
+%   Run Goal (once); Reclaimed is the number of clauses SWI-Prolog's
+%   clause garbage collector reclaims once it is done and the watchers
+%   have seen its changes: the clauses it retracted (see oro_store,
+%   "Writes leave no clause behind").
 
-test_churn_adds(Tag, Reclaimed) :-
+test_reclaimed(Goal, Reclaimed) :-
     oro_events_sync,
     garbage_collect_clauses,
     statistics(cgc_gained, Before),
-    forall(( between(1, 20, I),
-             between(1, 10, J)
-           ),
-           ( format(string(S), "churn_~w_~d isOn place_~d", [Tag, I, J]),
-             oro_add(myself, [S])
-           )),
+    once(Goal),
     oro_events_sync,
     garbage_collect_clauses,
     statistics(cgc_gained, After),
     Reclaimed is After - Before.
+
+%!  test_churn_adds(+Tag, -Reclaimed) is det.
+%
+%   Add 200 statements to the robot's model, one write each: subjects
+%   churn_Tag_I (I in 1..20), `isOn`, objects place_J (J in 1..10).
+%   Reclaimed is as for test_reclaimed/2.  Call it once with another
+%   Tag first, so that the name cache already holds every name.
+
+test_churn_adds(Tag, Reclaimed) :-
+    test_reclaimed(forall(( between(1, 20, I),
+                            between(1, 10, J)
+                          ),
+                          ( format(string(S), "churn_~w_~d isOn place_~d",
+                                   [Tag, I, J]),
+                            oro_add(myself, [S])
+                          )),
+                   Reclaimed).
 
 %!  test_find(+Model, +Var, +Patterns, -Names) is det.
 %

@@ -44,6 +44,17 @@ st_two_models :-
 st_iri(Local, IRI) :-
     rdf_global_id(oro:Local, IRI).
 
+%   st_iris(+Format, +N, -IRIs): the IRIs of the local names Format
+%   makes of 1 to N.
+
+st_iris(Format, N, IRIs) :-
+    findall(IRI,
+            ( between(1, N, I),
+              format(atom(Local), Format, [I]),
+              st_iri(Local, IRI)
+            ),
+            IRIs).
+
 %   st_triple(+Statement, -Triple): the rdf/3 term of a statement text.
 
 st_triple(Statement, Triple) :-
@@ -463,12 +474,8 @@ test(removal_reclaimed_after_next_write, true(Kept1-Kept2 == kept-none)) :-
 test(removals_in_a_row_reclaimed, true(Kept == none)) :-
     st_iri(isOn, P),
     st_iri(gc_table, O),
-    findall(rdf(S, P, O),
-            ( between(1, 3, I),
-              format(atom(Local), 'gc_row_~d', [I]),
-              st_iri(Local, S)
-            ),
-            Triples),
+    st_iris('gc_row_~d', 3, Subjects),
+    findall(rdf(S, P, O), member(S, Subjects), Triples),
     oro_store_write(test, oro_store_assert(myself, Triples, longterm)),
     forall(member(Triple, Triples),
            oro_store_write(test, oro_store_retract(myself, [Triple]))),
@@ -565,12 +572,8 @@ st_gc_round(Queue, Round) :-
     format(atom(Local), 'gc_obj_~d', [Sub]),
     st_iri(Local, S),
     st_iri(gc_place, O),
-    findall(rdf(S, P, O),
-            ( between(1, 6, I),
-              format(atom(PLocal), 'gc_rel_~d', [I]),
-              st_iri(PLocal, P)
-            ),
-            Triples),
+    st_iris('gc_rel_~d', 6, Predicates),
+    findall(rdf(S, P, O), member(P, Predicates), Triples),
     oro_store_write(test, oro_store_assert(myself, Triples, longterm)),
     rdf_snapshot(Snapshot),
     thread_send_message(Queue, check(Snapshot, Triples)),
@@ -621,18 +624,13 @@ test(adds_retract_no_clause, true(Reclaimed < 20)) :-
     test_churn_adds(probe, Reclaimed).
 test(removals_retract_no_clause, true(Reclaimed < 20)) :-
     test_churn_adds(removed, _),
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, Before),
-    forall(( between(1, 20, I),
-             between(1, 9, J)                   % place_10 stays: no name goes
-           ),
-           ( format(string(S), "churn_removed_~d isOn place_~d", [I, J]),
-             oro_remove(myself, [S])
-           )),
-    oro_events_sync,
-    garbage_collect_clauses,
-    statistics(cgc_gained, After),
-    Reclaimed is After - Before.
+    test_reclaimed(
+        forall(( between(1, 20, I),
+                 between(1, 9, J)               % place_10 stays: no name goes
+               ),
+               ( format(string(S), "churn_removed_~d isOn place_~d", [I, J]),
+                 oro_remove(myself, [S])
+               )),
+        Reclaimed).
 
 :- end_tests(store_clause_churn).
