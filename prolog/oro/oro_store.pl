@@ -961,13 +961,12 @@ release_gc_pin :-
     ;   true
     ).
 
-%   The pin is the one message gc_pin(Snapshot) of the
-%   queue oro_gc_pin, which only the holder of the `oro_write` mutex
-%   changes: a message queue, unlike a fact, leaves nothing for the
-%   clause garbage collector when the pin is replaced.  A message is
-%   peeked at before it is taken: thread_get_message/3 with
-%   timeout(0) was seen to spin for ever in SWI-Prolog 9.0.4 (while
-%   this module loads).
+%   The pin is the one message gc_pin(Snapshot) of the queue
+%   oro_gc_pin, which only the holder of the `oro_write` mutex changes:
+%   a message queue, unlike a fact, leaves nothing for the clause
+%   garbage collector when the pin is replaced.  A message is peeked at
+%   before it is taken: thread_get_message/3 with timeout(0) was seen
+%   to spin for ever in SWI-Prolog 9.0.4 (while this module loads).
 
 :- initialization(( gc_pin_queue,
                     with_mutex(oro_write, renew_gc_pin)
