@@ -462,50 +462,33 @@ test(snapshot_keeps_its_triples_while_gc_runs, Missed == 0) :-
     st_gc_race(5000, Missed).
 test(removal_reclaimed_after_next_write, true(Kept1-Kept2 == kept-none)) :-
     st_iri(gc_cup, S),
-    st_iri(isOn, P),
-    st_iri(gc_table, O),
-    st_iri(gc_shelf, O2),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
-    oro_store_write(test, oro_store_retract(myself, [rdf(S, P, O)])),
+    st_put(S, gc_table),
+    st_take(S, gc_table),
     st_kept_garbage(Kept0),
     functor(Kept0, Kept1, _),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
+    st_put(S, gc_shelf),
     st_kept_garbage(Kept2).
 test(removals_in_a_row_reclaimed, true(Kept == none)) :-
-    st_iri(isOn, P),
-    st_iri(gc_table, O),
     st_iris('gc_row_~d', 3, Subjects),
-    findall(rdf(S, P, O), member(S, Subjects), Triples),
-    oro_store_write(test, oro_store_assert(myself, Triples, longterm)),
-    forall(member(Triple, Triples),
-           oro_store_write(test, oro_store_retract(myself, [Triple]))),
-    rdf_statistics(triples(Live)),
-    oro_events_sync,
-    rdf_gc,
-    rdf_db:rdf_gc_info_(Info),
-    arg(1, Info, Stored),
-    Kept0 is Stored - Live,             % the last removal's triple only
-    assertion(Kept0 =:= 1),
+    forall(member(S, Subjects), st_put(S, gc_table)),
+    forall(member(S, Subjects), st_take(S, gc_table)),
+    st_kept_garbage(kept(Stored, Live)),
+    assertion(Stored - Live =:= 1),     % the last removal's triple only
     st_iri(gc_lamp, S2),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S2, P, O)], longterm)),
+    st_put(S2, gc_table),
     st_kept_garbage(Kept).
 test(pin_renewed_by_each_write, true(Pin \== Pin0)) :-
     st_iri(gc_mug, S),
-    st_iri(isOn, P),
-    st_iri(gc_table, O),
-    st_iri(gc_shelf, O2),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
+    st_put(S, gc_table),
     thread_peek_message(oro_gc_pin, gc_pin(Pin0)),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
+    st_put(S, gc_shelf),
     thread_peek_message(oro_gc_pin, gc_pin(Pin)).
 test(unmask_reclaimed_after_next_write, true(Kept == none)) :-
     st_triple("Mug rdfs:subClassOf Container", Triple),
-    st_iri(gc_bowl, S),
-    st_iri(isOn, P),
-    st_iri(gc_table, O),
     oro_store_write(test, oro_store_retract(myself, [Triple])),
     oro_store_write(test, oro_store_assert(myself, [Triple], longterm)),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
+    st_iri(gc_bowl, S),
+    st_put(S, gc_table),
     st_kept_garbage(Kept).
 test(pin_after_rebuild, true(Kept == none)) :-
     assertion(oro_store_rebuild),
@@ -515,13 +498,25 @@ test(erased_pin_dropped, true(Kept == none)) :-
     rdf_delete_snapshot(Gone),
     with_mutex(oro_write, thread_send_message(oro_gc_pin, gc_pin(Gone))),
     st_iri(gc_plate, S),
-    st_iri(isOn, P),
-    st_iri(gc_table, O),
-    st_iri(gc_shelf, O2),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O)], longterm)),
-    oro_store_write(test, oro_store_retract(myself, [rdf(S, P, O)])),
-    oro_store_write(test, oro_store_assert(myself, [rdf(S, P, O2)], longterm)),
+    st_put(S, gc_table),
+    st_take(S, gc_table),
+    st_put(S, gc_shelf),
     st_kept_garbage(Kept).
+
+%   st_put(+S, +Place), st_take(+S, +Place): one write asserting, or
+%   retracting, `S isOn Place` in the robot's model.
+
+st_put(S, Place) :-
+    st_is_on(S, Place, Triple),
+    oro_store_write(test, oro_store_assert(myself, [Triple], longterm)).
+
+st_take(S, Place) :-
+    st_is_on(S, Place, Triple),
+    oro_store_write(test, oro_store_retract(myself, [Triple])).
+
+st_is_on(S, Place, rdf(S, P, O)) :-
+    st_iri(isOn, P),
+    st_iri(Place, O).
 
 %   st_kept_garbage(-Kept): `none` if a snapshot is alive (the pin) and
 %   yet, once rdf_db's GC has run, no deleted triple is kept: the pin is
