@@ -1,5 +1,6 @@
 :- module(bench_common,
           [ bench_machine/0,
+            bench_pin_to_cpu/1,         % +CPU
             bench_list_option/3,        % ?Option, +Options, +Default
             bench_with_server/4,        % +Args, -Port, -Pid, :Goal
             bench_with_script/5,        % +Script, +Args, -Port, -Pid, :Goal
@@ -135,6 +136,28 @@ term_list(Term, List) :-
     ->  comma_list(Term, List)
     ;   List = [Term]
     ).
+
+%!  bench_pin_to_cpu(+CPU) is det.
+%
+%   Run every thread of this process, and so every process it starts
+%   later (servers, the echo), on CPU only (taskset(1)).  A request and
+%   its reply then never cross from one core to another: on a virtual
+%   machine such a wake-up costs tens of microseconds, and whether the
+%   scheduler puts a client and its server on the same core or not
+%   differs from one process to the next, so figures are only
+%   comparable when every process shares one core.
+
+bench_pin_to_cpu(CPU) :-
+    must_be(nonneg, CPU),
+    current_prolog_flag(pid, Pid),
+    process_create(path(taskset), ['-a', '-p', '-c', CPU, Pid],
+                   [stdout(null), process(Proc)]),
+    process_wait(Proc, Status),
+    (   Status == exit(0)
+    ->  true
+    ;   throw(error(bench_pin(CPU, Status), _))
+    ).
+
 
 		 /*******************************
 		 *            SERVER            *

@@ -43,9 +43,9 @@
     ratios; the targets with PASS/MISS.
 
     --pin=CPU runs this process and every process it starts on that
-    one CPU (see pin_to_cpu/1): the socket figures and their echo floor
-    are then measured with the same placement, which the scheduler does
-    not promise otherwise.  Throughput (bulk add, 8 clients) is lower
+    one CPU (see bench_common:bench_pin_to_cpu/1): the socket figures
+    and their echo floor are then measured with the same placement,
+    which the scheduler does not promise otherwise.  Throughput (bulk add, 8 clients) is lower
     there, as the client and the server take turns on one core.
 
     A table on stdout, progress on stderr, and everything in the JSON
@@ -134,7 +134,7 @@ bench(Options) :-
     nb_setval(bench_start, Start),
     retractall(said(_)),
     (   option(pin(CPU), Options)
-    ->  pin_to_cpu(CPU),
+    ->  bench_pin_to_cpu(CPU),
         Placement = cpu(CPU)
     ;   Placement = free
     ),
@@ -164,25 +164,6 @@ bench(Options) :-
 
 self_script(File) :-
     absolute_file_name(oro_bench('bench_full.pl'), File, [access(read)]).
-
-%   pin_to_cpu(+CPU): run every thread of this process, and so every
-%   process it starts later (the servers, the echo), on CPU only
-%   (taskset(1)).  A request and its reply then never cross from one
-%   core to another: on a virtual machine such a wake-up costs tens of
-%   microseconds, and whether the scheduler puts a client and its
-%   server on the same core or not differs from one process to the
-%   next, so the ratios to the echo floor are only comparable when
-%   every process shares one core.
-
-pin_to_cpu(CPU) :-
-    current_prolog_flag(pid, Pid),
-    process_create(path(taskset), ['-a', '-p', '-c', CPU, Pid],
-                   [stdout(null), process(Proc)]),
-    process_wait(Proc, Status),
-    (   Status == exit(0)
-    ->  true
-    ;   throw(error(bench_pin(CPU, Status), _))
-    ).
 
 %   machine(+Sizes, +Samples, +Budget, +Placement, -Machine): print the
 %   machine line (bench_common:bench_machine/0) and the run's

@@ -97,7 +97,8 @@ collector.  Once a program has erased clauses it held references to
 SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
 run of that collector.  With three or four clauses retracted a write,
 a server adding one statement at a time ran both collectors every 12
-writes, at a cost of 40 us a write (bench/RESULTS.md).
+writes; they took 12 to 37 us of CPU a write (bench/bench_writes.pl,
+bench/RESULTS.md).
 */
 
 :- dynamic
