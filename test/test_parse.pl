@@ -748,6 +748,36 @@ test(collections_random, Bad == []) :-
               Fast \=@= General
             ),
             Bad).
+test(collections_quoted_random, Bad == []) :-
+    quoted_corpus(3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
+              outcome(general_collection(Text, E2), E2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(collections_quoted_escapes, true(E == ["obj1 rdfs:label \"cup\"", "b"])) :-
+    oro_parse_collection(list, "[\"obj1 rdfs:label \\\"cup\\\"\", \"b\"]", E).
+test(collections_quoted_random_hit_fast_path, true(Fast >= 300)) :-
+    quoted_corpus(3000, Texts),
+    aggregate_all(count,
+                  ( member(Text, Texts),
+                    quoted_fast(Text)
+                  ),
+                  Fast).
+test(collections_quoted_fast_path_taken, true) :-
+    quoted_fast("[\"obj1 rdf:type Cup\",\"obj1 isOn table1\"]"),  % liboro
+    quoted_fast("[\"obj1 rdfs:label \\\"cup\\\"\",\"b\"]"),
+    quoted_fast("['obj1 rdf:type Cup', 'obj1 rdfs:label \"cup\"']"), % pyoro
+    quoted_fast("['it\\'s', 'b']"),
+    \+ quoted_fast("[\"a\\\\\", \"b\"]"),
+    \+ quoted_fast("[\"a\\\", \"b\"]"),
+    quoted_fast("[ \"a\" , \"b\" ]"),
+    \+ quoted_fast("[\"it's\", \"b\"]"),
+    \+ quoted_fast("[\"a\",]"),
+    \+ quoted_fast("[\"a\" \"b\"]"),
+    \+ quoted_fast("[\"a\",\t\"b\"]").
 test(set_keeps_first_occurrences, true(E == ["b", "a", "c"])) :-
     oro_parse_collection(set, "[b, a, b, c, a]", E).
 test(set_without_duplicates, true(E == ["c", "a", "b"])) :-
@@ -805,6 +835,64 @@ test(nul_splits_or_is_checked, true) :-
 
 local(Text) :-
     catch(oro_parse:local_statement(Text, _), error(_, _), true).
+
+%   quoted_corpus(+N, -Texts): N random collections shaped as the
+%   clients send them -- elements all or mostly quoted with one quote,
+%   separated by a comma and spaces -- with, now and then, what the
+%   fast path for quoted elements must refuse: the other quote an odd
+%   number of times, a bracket, a backslash, a tab, a missing comma, a
+%   bare or differently quoted element.
+
+quoted_corpus(N, Texts) :-
+    set_random(seed(4321)),
+    length(Texts, N),
+    maplist(quoted_text, Texts).
+
+quoted_text(Text) :-
+    random_member(Quote, ["\"", "'"]),
+    random_between(1, 4, Count),
+    length(Elements, Count),
+    maplist(quoted_element(Quote), Elements),
+    random_separators(Count, Separators),
+    interleave(Elements, Separators, Parts),
+    random_member(Pre, ["", " ", "  "]),
+    random_member(Post, ["", " "]),
+    atomics_to_string(["[", Pre|Parts], Text0),
+    atomics_to_string([Text0, Post, "]"], Text).
+
+quoted_element(Quote, Element) :-
+    (   maybe(0.7)                          % mostly what clients send
+    ->  string_concat("\\", Quote, Escaped),
+        random_between(0, 6, Length),
+        length(Pieces, Length),
+        maplist(random_member_of(["a", "b", " ", ",", "\"", "'", Escaped]),
+                Pieces),
+        atomics_to_string(Pieces, Inside)
+    ;   random_text("ab ,\"'\\[]{}\t", 6, Inside)
+    ),
+    (   maybe(0.95)
+    ->  Q = Quote
+    ;   random_member(Q, ["", "\"", "'"])
+    ),
+    atomics_to_string([Q, Inside, Q], Element).
+
+random_member_of(List, X) :-
+    random_member(X, List).
+
+random_separators(Count, Separators) :-
+    N is Count - 1,
+    length(Separators, N),
+    maplist(random_member_of([",", ",", ", ", " , ", ",  ", " ", ",\t",
+                              ",,"]),
+            Separators).
+
+interleave([E], [], [E]).
+interleave([E|Es], [S|Ss], [E, S|Parts]) :-
+    interleave(Es, Ss, Parts).
+
+quoted_fast(Text) :-
+    oro_parse:framed(Text, 0'[, 0'], Inner),
+    oro_parse:quoted_elements(Inner, _).
 
 %   general_collection(+Text, -Elements): oro_parse_collection/3 (list)
 %   the general way only.

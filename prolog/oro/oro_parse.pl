@@ -102,8 +102,77 @@ tokenize(Text, Delimiter, Tokens) :-
     (   untracked(Text)
     ->  char_code(Sep, Delimiter),
         split_string(Text, Sep, "", Tokens)     % nothing to track
+    ;   Delimiter =\= 0,
+        \+ sub_atom_icasechk(Text, _, "\u0000")
+    ->  scan_tokenize(Text, Delimiter, Tokens)
     ;   general_tokenize(Text, Delimiter, Tokens)
     ).
+
+%   scan_tokenize(+Text, +Delimiter, -Tokens): tokenize/3 looking only
+%   at the characters that can change the tokenizer's state or split:
+%   the tracked ones and Delimiter.  split_string/4 finds them (Text
+%   has no NUL, see one_part/2); between two of them lies plain text,
+%   which counts nothing and leaves a previous character that is not
+%   `\`.  A set of quoted statements has a few such characters per
+%   statement, against some thirty codes for general_tokenize/3.
+
+scan_tokenize(Text, Delimiter, Tokens) :-
+    char_code(Char, Delimiter),
+    string_concat("[]{}\"'\\", Char, Tracked),
+    split_string(Text, Tracked, "", [First|Parts]),
+    string_length(First, Pos),
+    scan_cuts(Parts, Text, Pos, Delimiter, -1, 0, 0, 0, 0, Cuts),
+    cut_tokens(Cuts, Text, 0, Tokens).
+
+%   scan_cuts(+Parts, +Text, +Pos, +Delimiter, +Prev, +Brackets,
+%             +Braces, +InDouble, +InSingle, -Cuts)
+%
+%   The tracked character at offset Pos of Text is followed by the
+%   plain text of the first of Parts.  Cuts are the offsets of the
+%   delimiters Text splits at, as token/9 decides them.
+
+scan_cuts([], _, _, _, _, _, _, _, _, []).
+scan_cuts([Part|Parts], Text, Pos, D, Prev, SB0, CB0, DQ0, SQ0, Cuts) :-
+    Index is Pos+1,
+    code_at(Index, Text, C),
+    (   Prev == 0'\\
+    ->  SB = SB0, CB = CB0, DQ = DQ0, SQ = SQ0
+    ;   count(C, SB0, CB0, DQ0, SQ0, SB, CB, DQ, SQ)
+    ),
+    (   C == D,
+        SB == 0,
+        CB == 0,
+        DQ == 0,
+        SQ == 0
+    ->  Cuts = [Pos|Cuts1]
+    ;   Cuts = Cuts1
+    ),
+    string_length(Part, Length),
+    (   Length =:= 0
+    ->  Prev1 = C
+    ;   Prev1 = -1
+    ),
+    Pos1 is Index+Length,
+    scan_cuts(Parts, Text, Pos1, D, Prev1, SB, CB, DQ, SQ, Cuts1).
+
+%   code_at(+Index, +Text, -Code): string_code/3 in constant time.  In
+%   SWI-Prolog 9.0.4, string_code/3 on a string takes time in
+%   proportion to its length, wherever Index is: 1.7 us a call on 3,000
+%   characters, 0.06 us on 3.  A request's set of statements is such a
+%   string.
+
+code_at(Index, Text, Code) :-
+    Before is Index-1,
+    sub_string(Text, Before, 1, _, Char),
+    string_code(1, Char, Code).
+
+cut_tokens([], Text, Start, [Token]) :-
+    sub_string(Text, Start, _, 0, Token).
+cut_tokens([Cut|Cuts], Text, Start, [Token|Tokens]) :-
+    Length is Cut-Start,
+    sub_string(Text, Start, Length, _, Token),
+    Next is Cut+1,
+    cut_tokens(Cuts, Text, Next, Tokens).
 
 %   general_tokenize(+Text, +Delimiter, -Tokens): tokenize/3 code by
 %   code, tracking depths and quotes.
@@ -408,11 +477,104 @@ collection_elements(Text, Elements) :-
     ;   framed(Text, 0'[, 0'], Inner)
     ->  (   Inner == ""
         ->  Elements = []
+        ;   quoted_elements(Inner, Elements0)
+        ->  Elements = Elements0
         ;   plain_text(Inner)               % split, trim: one C call
         ->  split_string(Inner, ",", " ", Elements)
         ;   general_elements(Inner, Elements)
         )
     ;   throw(error(type_error(oro_collection, Text), _))
+    ).
+
+%   quoted_elements(+Inner, -Elements): the fast path for the inside of
+%   a collection whose elements are all quoted with the same quote, as
+%   the clients send them: liboro `"a b c","d \"e\" f"`, pyoro `'a b
+%   c', 'd e "f"'`.  It applies when the elements hold no bracket or
+%   brace, no backslash but one escaping the quote, and the other quote
+%   an even number of times, and are separated by one comma with spaces
+%   around it at most.  The general path then splits exactly at those
+%   commas (the quote's flag is on inside each element, the other
+%   quote's flag is off again at its end), trims what is around the
+%   quotes and takes them off, and its unescaping turns each escaped
+%   quote into the quote: each element is what lies between its quotes,
+%   escapes undone (a control character inside is kept either way).
+%   Fails on anything else.
+
+quoted_elements(Inner, Elements) :-
+    opening_quote(Inner, Code),
+    quote_pair(Code, Quote, Other),
+    one_part(Inner, "[]{}"),
+    (   sub_atom_icasechk(Inner, _, "\\")
+    ->  split_string(Inner, "\\", "", [_|Escaped]),
+        maplist(escaped_quote(Quote), Escaped),
+        Escapes = true
+    ;   Escapes = false
+    ),
+    (   sub_atom_icasechk(Inner, _, Other)
+    ->  Others = true
+    ;   Others = false
+    ),
+    split_string(Inner, Quote, "", [Before|Parts]),
+    split_string(Before, "", " ", [""]),
+    quoted_parts(Parts, q(Quote, Escapes, Other, Others), Elements).
+
+%   opening_quote(+Inner, -Code): the first character of Inner that is
+%   not a space (the clients write none).
+
+opening_quote(Inner, Code) :-
+    code_at(1, Inner, Code0),
+    (   Code0 == 0'\s
+    ->  split_string(Inner, "", " ", [Trimmed]),
+        code_at(1, Trimmed, Code)
+    ;   Code = Code0
+    ).
+
+quote_pair(0'", "\"", "'").
+quote_pair(0'\', "'", "\"").
+
+escaped_quote(Quote, Text) :-
+    sub_string(Text, 0, 1, _, Quote).
+
+%   quoted_parts(+Parts, +Q, -Elements): Parts, the pieces of the text
+%   between quotes, are an element, what separates it from the next,
+%   and so on.  An element is several pieces where a piece ends with
+%   the backslash escaping the quote after it.  Q holds the quote,
+%   whether the text has escapes, the other quote and whether the text
+%   has it.
+
+quoted_parts(Parts0, Q, [Element|Elements]) :-
+    quoted_element(Parts0, Q, Element, [Between|Parts]),
+    (   arg(4, Q, true)
+    ->  arg(3, Q, Other),
+        split_string(Element, Other, "", OtherParts),
+        length(OtherParts, N),
+        N mod 2 =:= 1                       % the other quote: even times
+    ;   true
+    ),
+    (   Parts == []
+    ->  split_string(Between, "", " ", [""]),
+        Elements = []
+    ;   comma(Between),
+        quoted_parts(Parts, Q, Elements)
+    ).
+
+quoted_element([Piece|Parts0], Q, Element, Parts) :-
+    (   arg(2, Q, true),
+        sub_string(Piece, Length, 1, 0, "\\")
+    ->  sub_string(Piece, 0, Length, _, Head),
+        quoted_element(Parts0, Q, Tail, Parts),
+        arg(1, Q, Quote),
+        atomics_to_string([Head, Quote, Tail], Element)
+    ;   Element = Piece,
+        Parts = Parts0
+    ).
+
+comma(Between) :-
+    (   Between == ","
+    ->  true
+    ;   Between == ", "
+    ->  true
+    ;   split_string(Between, "", " ", [","])
     ).
 
 %   general_elements(+Inner, -Elements): the elements of the non-empty
@@ -435,8 +597,8 @@ null_text(Text) :-
 framed(Text, Open, Close, Inner) :-
     string_length(Text, Len),
     Len >= 2,
-    string_code(1, Text, Open),
-    string_code(Len, Text, Close),
+    code_at(1, Text, Open),
+    code_at(Len, Text, Close),
     sub_string(Text, 1, _, 1, Inner).
 
 %!  oro_parse_map(+Text, -Pairs:list(pair(string,string))) is det.
