@@ -647,7 +647,7 @@ echo_floors(EchoPort, Params, W, echo{one:One, batch:Batch}) :-
                         asserted_statement(W, I, S), T1),
           bench_measure(Params.samples, Params.budget, I,
                         bench_call(E, add, [B]),
-                        bulk_batch(W, I, B), T100)
+                        bulk_batch(W, bulk, I, B), T100)
         )),
     bench_stats(T1, One),
     bench_stats(T100, Batch).
@@ -731,7 +731,13 @@ op(add_1, "add 1 statement", one, C, W, _, I,
    extra_statement(W, I, S)).
 op(add_100, "add a batch of 100", batch, C, W, _, I,
    call_ok(C, add, [B]),
-   bulk_batch(W, I, B)).
+   bulk_batch(W, bulk, I, B)).
+op(add_100_quoted, "add a batch of 100, quoted as liboro sends it", batch,
+   C, W, _, I,
+   call_ok(C, add, [B]),
+   ( bulk_batch(W, quoted, I, B0),
+     bench_quoted(B0, B)
+   )).
 op(update, "update 1 (functional property)", one, C, W, _, I,
    call_ok(C, update, [[S]]),
    update_statement(W, I, S)).
@@ -798,10 +804,11 @@ extra_statement(W, I, S) :-
     furniture_of(W, I, F),
     format(string(S), "extra~d isOn furniture~d", [I, F]).
 
-bulk_batch(W, I, Batch) :-
+bulk_batch(W, Prefix, I, Batch) :-
     findall(S, ( between(1, 100, K),
                  furniture_of(W, K, F),
-                 format(string(S), "bulk~d_~d isOn furniture~d", [I, K, F])
+                 format(string(S), "~w~d_~d isOn furniture~d",
+                        [Prefix, I, K, F])
                ), Batch).
 
 %   sample_object(+World, +I, -J): the object of sample I, spread over
