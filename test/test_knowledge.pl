@@ -13,6 +13,7 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(lists)).
 :- use_module(library(filesex)).
+:- use_module(library(time)).
 
 %   Fresh stores: the test ontology alone, or the common-sense one.
 
@@ -437,6 +438,28 @@ test(term_template, [ setup(knowledge_testsuite),
                    oro_iri_name(X1, N),
                    oro_term_text(A1, T)
                  ), Pairs).
+
+%   A join of two unbound patterns over the common-sense ontology takes
+%   seconds (2.5 s on the project's VM): it stops at the time limit,
+%   read after each solution.  (The outer limit only keeps a broken
+%   check from slowing the suite.)
+
+test(join_stopped_at_time_limit,
+     [ setup(knowledge_commonsense),
+       error(resource_error(oro_query_time_limit(0.05)))
+     ]) :-
+    test_with_setting(
+        oro_query:time_limit, 0.05,
+        call_with_time_limit(30,
+                             oro_find(myself, x, ["?x ?p ?o", "?a ?b ?c"],
+                                      _))).
+test(join_without_time_limit, [ setup(knowledge_testsuite),
+                                 true(Xs == [baboon])
+                               ]) :-
+    test_with_setting(
+        oro_query:time_limit, 0,
+        test_find(myself, x, ["?x rdf:type Monkey", "?x isFemale true"],
+                  Xs)).
 
 :- end_tests(find).
 

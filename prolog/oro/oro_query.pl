@@ -27,10 +27,15 @@ must not hold a server worker and a core that long.  Past the limit,
 the question stops with
 `error(resource_error(oro_query_time_limit(Seconds)), _)`.  A single
 pattern, and check (whose patterns share no variable), cost at most a
-scan of what they match, and run without a limit: a limit is an alarm
-of library(time), whose thread is woken twice a call -- on the
+scan of what they match, and run without a limit.
+
+A SPARQL query is limited by an alarm of library(time)
+(oro_with_time_limit/1), whose thread is woken twice a call: on the
 project's VM, two thread switches that cost a `check` over the socket
-more than the check itself.
+more than the check itself.  A find of several patterns does without:
+oro_find_values/4 reads the clock after each solution of each pattern
+and stops past its deadline.  Between two readings it evaluates one
+pattern, which costs at most a scan; so it stops at most that late.
 */
 
 :- setting(time_limit, number, 5,
@@ -66,13 +71,41 @@ prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
 %   pattern holds in Model.  Solutions may repeat when several
 %   derivations exist; use oro_find_values/4 for distinct answers.
 
-oro_solve(_, []) :-
-    !.
 oro_solve(Model, Patterns) :-
+    solve(Patterns, Model, none).
+
+%   solve(+Patterns, +Model, +Deadline): oro_solve/2, stopping past
+%   Deadline (see deadline/1).
+
+solve([], _, _) :-
+    !.
+solve(Patterns, Model, Deadline) :-
     cheapest(Patterns, Pattern, Rest),
     Pattern = rdf(S, P, O),
     oro_holds(Model, S, P, O),
-    oro_solve(Model, Rest).
+    in_time(Deadline),
+    solve(Rest, Model, Deadline).
+
+%   deadline(-Deadline): `none`, or deadline(Time, Limit) when the
+%   `time_limit` setting is Limit seconds from now.
+
+deadline(Deadline) :-
+    setting(time_limit, Limit),
+    (   Limit =< 0
+    ->  Deadline = none
+    ;   get_time(Now),
+        Time is Now + Limit,
+        Deadline = deadline(Time, Limit)
+    ).
+
+in_time(none) :-
+    !.
+in_time(deadline(Time, Limit)) :-
+    get_time(Now),
+    (   Now =< Time
+    ->  true
+    ;   throw(error(resource_error(oro_query_time_limit(Limit)), _))
+    ).
 
 %!  oro_pattern_holds(+Model, +Pattern) is semidet.
 %
@@ -93,10 +126,10 @@ oro_pattern_holds(Model, rdf(S, P, O)) :-
 
 oro_find_values(Model, Template, Patterns, Values) :-
     (   Patterns = [_, _|_]
-    ->  oro_with_time_limit(findall(Template, oro_solve(Model, Patterns),
-                                    Values0))
-    ;   findall(Template, oro_solve(Model, Patterns), Values0)
+    ->  deadline(Deadline)
+    ;   Deadline = none
     ),
+    findall(Template, solve(Patterns, Model, Deadline), Values0),
     sort(Values0, Values1),
     usable_values(Values1, Values).
 
