@@ -9,6 +9,7 @@
 :- use_module(library(time)).
 :- use_module(library(pairs)).
 :- use_module(oro_reason).
+:- use_module(oro_names, [oro_resource/2, oro_object/2]).
 
 /** <module> Query: conjunctive patterns over the inference closure
 
@@ -75,16 +76,27 @@ oro_solve(Model, Patterns) :-
     solve(Patterns, Model, none).
 
 %   solve(+Patterns, +Model, +Deadline): oro_solve/2, stopping past
-%   Deadline (see deadline/1).
+%   Deadline (see deadline/1).  The patterns' names are normalised once;
+%   what their variables are bound to comes from the store, normal
+%   already (oro_holds_normal/4).
 
-solve([], _, _) :-
+solve(Patterns0, Model, Deadline) :-
+    maplist(normal_pattern, Patterns0, Patterns),
+    solve_normal(Patterns, Model, Deadline).
+
+normal_pattern(rdf(S0, P0, O0), rdf(S, P, O)) :-
+    oro_resource(S0, S),
+    oro_resource(P0, P),
+    oro_object(O0, O).
+
+solve_normal([], _, _) :-
     !.
-solve(Patterns, Model, Deadline) :-
+solve_normal(Patterns, Model, Deadline) :-
     cheapest(Patterns, Pattern, Rest),
     Pattern = rdf(S, P, O),
-    oro_holds(Model, S, P, O),
+    oro_holds_normal(Model, S, P, O),
     in_time(Deadline),
-    solve(Rest, Model, Deadline).
+    solve_normal(Rest, Model, Deadline).
 
 %   deadline(-Deadline): `none`, or deadline(Time, Limit) when the
 %   `time_limit` setting is Limit seconds from now.

@@ -1,5 +1,6 @@
 :- module(oro_reason,
           [ oro_holds/4,                % +Model, ?S, ?P, ?O
+            oro_holds_normal/4,         % +Model, ?S, ?P, ?O
             oro_type/3,                 % +Model, ?X, ?Class
             oro_subclass/3,             % +Model, ?Sub, ?Super
             oro_subproperty/3,          % +Model, ?Sub, ?Super
@@ -1002,6 +1003,18 @@ oro_holds(Model, S0, P0, O0) :-
     oro_resource(S0, S),
     oro_resource(P0, P),
     oro_object(O0, O),
+    oro_holds_normal(Model, S, P, O).
+
+%!  oro_holds_normal(+Model, ?S, ?P, ?O) is nondet.
+%
+%   As oro_holds/4, for S, P and O already normal: IRIs, rdf_db literal
+%   terms or variables, as oro_resource/2 and oro_object/2 give them and
+%   as the store's triples hold them.  For callers that evaluate many
+%   patterns whose terms are normal by construction (oro_solve/2 binds
+%   the variables of its patterns to terms of the store), so that the
+%   names are not normalised again at each step.
+
+oro_holds_normal(Model, S, P, O) :-
     schema(Model, Key),
     (   ground(S-P-O)
     ->  holds(Key, Model, anc(0, []), S, P, O),
