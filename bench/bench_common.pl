@@ -204,12 +204,11 @@ bench_with_script(Script, Args, Port, Pid, Goal) :-
 %
 %   Stop the child process Pid and wait for it to end: SIGTERM; if it
 %   still runs 10 s later, SIGINT; 10 s after that, SIGKILL.  Each step
-%   beyond SIGTERM is reported on standard error.  The server's SIGTERM
-%   can be lost (with SWI-Prolog 9.0.4 a SIGTERM the kernel hands to
-%   another thread than main runs no handler, see server/oro_server.pl);
-%   its SIGINT cannot, while a child that is not the server may ignore
-%   SIGINT.  A plain process_kill/1 followed by process_wait/2 then
-%   waits forever.
+%   beyond SIGTERM is reported on standard error.  A process may lose a
+%   SIGTERM (with SWI-Prolog 9.0.4, one the kernel hands to a thread
+%   that has not run yet; the server guards against it, see
+%   server/oro_server.pl) or ignore SIGINT; a plain process_kill/1
+%   followed by process_wait/2 would then wait forever.
 
 bench_stop_process(Pid) :-
     stop_process([term, int, kill], Pid).

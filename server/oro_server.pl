@@ -138,6 +138,7 @@ main :-
     ),
     on_signal(term, _, shutdown_signal),
     on_signal(int, _, shutdown_signal),
+    threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
     thread_get_message(oro_server_stop),
@@ -147,14 +148,35 @@ main :-
 %   SIGTERM and SIGINT are handled by the main thread, which waits for
 %   this message: the shutdown itself runs outside the signal handler.
 %
-%   With SWI-Prolog 9.0.4, a SIGTERM that the kernel hands to another
-%   thread than main (it can, when main blocks signals for a moment)
-%   runs no handler: it is lost.  Reproduced in a ten-line script with
-%   two idle threads, once in a few dozen starts on a loaded machine.
-%   SIGINT is blocked in every thread but main, so it always works.
+%   SWI-Prolog blocks SIGINT in every thread but main, not SIGTERM: the
+%   kernel may hand a SIGTERM to another thread, whose handler then
+%   runs it.  With SWI-Prolog 9.0.4 a thread that has been created but
+%   has not run yet drops it.  A supervisor that stops the server right
+%   after it said it listens hit that window: on one core, 2 stops in
+%   30 were lost.  So main announces that it listens only once every
+%   other thread has run a goal it sent it (threads_settled/0): after
+%   that, 0 in 90.
 
 shutdown_signal(_Signal) :-
     thread_send_message(main, oro_server_stop).
+
+%   threads_settled: every thread but main and SWI-Prolog's gc thread
+%   (which blocks all signals) has run a goal sent by thread_signal/2,
+%   so it runs Prolog and takes signals; 5 s at most for each.
+
+threads_settled :-
+    findall(Thread,
+            ( thread_property(Thread, status(running)),
+              \+ memberchk(Thread, [main, gc])
+            ),
+            Threads),
+    forall(member(Thread, Threads),
+           catch(thread_signal(Thread,
+                               thread_send_message(main, settled(Thread))),
+                 _, true)),
+    forall(member(Thread, Threads),
+           ignore(thread_get_message(main, settled(Thread),
+                                     [timeout(5)]))).
 
 loopback(Host) :-
     memberchk(Host, ['127.0.0.1', localhost, '::1']).
