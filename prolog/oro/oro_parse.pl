@@ -125,29 +125,21 @@ scan_tokenize(Text, Delimiter, Tokens) :-
     string_concat("[]{}\"'\\", Char, Tracked),
     split_string(Text, Tracked, "", [First|Parts]),
     string_length(First, Pos),
-    scan_cuts(Parts, Text, Pos, Delimiter, -1, 0, 0, 0, 0, Cuts),
+    scan_cuts(Parts, Text, Pos, Delimiter, -1, s(0, 0, 0, 0), Cuts),
     cut_tokens(Cuts, Text, 0, Tokens).
 
-%   scan_cuts(+Parts, +Text, +Pos, +Delimiter, +Prev, +Brackets,
-%             +Braces, +InDouble, +InSingle, -Cuts)
+%   scan_cuts(+Parts, +Text, +Pos, +Delimiter, +Prev, +State, -Cuts)
 %
 %   The tracked character at offset Pos of Text is followed by the
 %   plain text of the first of Parts.  Cuts are the offsets of the
-%   delimiters Text splits at, as token/9 decides them.
+%   delimiters Text splits at, as tokenizer_step/6 decides them.
 
-scan_cuts([], _, _, _, _, _, _, _, _, []).
-scan_cuts([Part|Parts], Text, Pos, D, Prev, SB0, CB0, DQ0, SQ0, Cuts) :-
+scan_cuts([], _, _, _, _, _, []).
+scan_cuts([Part|Parts], Text, Pos, D, Prev, State0, Cuts) :-
     Index is Pos+1,
     code_at(Index, Text, C),
-    (   Prev == 0'\\
-    ->  SB = SB0, CB = CB0, DQ = DQ0, SQ = SQ0
-    ;   count(C, SB0, CB0, DQ0, SQ0, SB, CB, DQ, SQ)
-    ),
-    (   C == D,
-        SB == 0,
-        CB == 0,
-        DQ == 0,
-        SQ == 0
+    tokenizer_step(C, Prev, D, State0, State, Split),
+    (   Split == true
     ->  Cuts = [Pos|Cuts1]
     ;   Cuts = Cuts1
     ),
@@ -157,7 +149,7 @@ scan_cuts([Part|Parts], Text, Pos, D, Prev, SB0, CB0, DQ0, SQ0, Cuts) :-
     ;   Prev1 = -1
     ),
     Pos1 is Index+Length,
-    scan_cuts(Parts, Text, Pos1, D, Prev1, SB, CB, DQ, SQ, Cuts1).
+    scan_cuts(Parts, Text, Pos1, D, Prev1, State, Cuts1).
 
 %   code_at(+Index, +Text, -Code): string_code/3 in constant time.  In
 %   SWI-Prolog 9.0.4, string_code/3 on a string takes time in
@@ -244,35 +236,45 @@ no_nul(Text) :-
 :- endif.
 
 tokens(Codes, Delimiter, Prev, [Token|Tokens]) :-
-    token(Codes, Delimiter, Prev, 0, 0, 0, 0, TokenCodes, Rest),
+    token(Codes, Delimiter, Prev, s(0, 0, 0, 0), TokenCodes, Rest),
     string_codes(Token, TokenCodes),
     (   Rest == end
     ->  Tokens = []
     ;   tokens(Rest, Delimiter, Delimiter, Tokens)
     ).
 
-%   token(+Codes, +Delimiter, +Prev, +Brackets, +Braces, +InDouble,
-%         +InSingle, -TokenCodes, -Rest)
+%   token(+Codes, +Delimiter, +Prev, +State, -TokenCodes, -Rest)
 %
 %   Rest is `end` at the end of the text, else the codes after the
 %   delimiter that ended the token.  After a split every depth and flag
 %   is zero by construction, so the next token starts from zeros.
 
-token([], _, _, _, _, _, _, [], end).
-token([C|Cs], D, Prev, SB0, CB0, DQ0, SQ0, Token, Rest) :-
-    (   Prev == 0'\\
-    ->  SB = SB0, CB = CB0, DQ = DQ0, SQ = SQ0
-    ;   count(C, SB0, CB0, DQ0, SQ0, SB, CB, DQ, SQ)
-    ),
-    (   C == D,
-        SB == 0,
-        CB == 0,
-        DQ == 0,
-        SQ == 0
+token([], _, _, _, [], end).
+token([C|Cs], D, Prev, State0, Token, Rest) :-
+    tokenizer_step(C, Prev, D, State0, State, Split),
+    (   Split == true
     ->  Token = [],
         Rest = Cs
     ;   Token = [C|Token1],
-        token(Cs, D, C, SB, CB, DQ, SQ, Token1, Rest)
+        token(Cs, D, C, State, Token1, Rest)
+    ).
+
+%   tokenizer_step(+C, +Prev, +Delimiter, +State0, -State, -Split): the
+%   tokenizer reads C, Prev being the character before it.  A state is
+%   s(Brackets, Braces, InDouble, InSingle); Split is `true` if the
+%   text splits at C.
+
+tokenizer_step(C, Prev, D, State0, State, Split) :-
+    (   Prev == 0'\\
+    ->  State = State0
+    ;   State0 = s(SB0, CB0, DQ0, SQ0),
+        count(C, SB0, CB0, DQ0, SQ0, SB, CB, DQ, SQ),
+        State = s(SB, CB, DQ, SQ)
+    ),
+    (   C == D,
+        State == s(0, 0, 0, 0)
+    ->  Split = true
+    ;   Split = false
     ).
 
 count(0'[,  SB0, CB,  DQ,  SQ,  SB, CB, DQ, SQ) :- !, SB is SB0+1.
