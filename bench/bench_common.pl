@@ -1,6 +1,8 @@
 :- module(bench_common,
           [ bench_machine/0,
             bench_pin_to_cpu/1,         % +CPU
+            bench_cpus/1,               % -CPUs
+            bench_set_cpus/1,           % +CPUs
             bench_list_option/3,        % ?Option, +Options, +Default
             bench_with_server/4,        % +Args, -Port, -Pid, :Goal
             bench_with_script/5,        % +Script, +Args, -Port, -Pid, :Goal
@@ -150,14 +152,38 @@ term_list(Term, List) :-
 
 bench_pin_to_cpu(CPU) :-
     must_be(nonneg, CPU),
+    bench_set_cpus(CPU).
+
+%!  bench_set_cpus(+CPUs) is det.
+%!  bench_cpus(-CPUs) is det.
+%
+%   Set, or get, the CPUs every thread of this process may run on, as
+%   taskset(1) writes them (`0`, `0,1`, `0-3`).  Setting them also sets
+%   them for the processes started later.
+
+bench_set_cpus(CPUs) :-
+    must_be(atomic, CPUs),
     current_prolog_flag(pid, Pid),
-    process_create(path(taskset), ['-a', '-p', '-c', CPU, Pid],
+    process_create(path(taskset), ['-a', '-p', '-c', CPUs, Pid],
                    [stdout(null), process(Proc)]),
     process_wait(Proc, Status),
     (   Status == exit(0)
     ->  true
-    ;   throw(error(bench_pin(CPU, Status), _))
+    ;   throw(error(bench_pin(CPUs, Status), _))
     ).
+
+bench_cpus(CPUs) :-
+    current_prolog_flag(pid, Pid),
+    setup_call_cleanup(
+        process_create(path(taskset), ['-p', '-c', Pid],
+                       [stdout(pipe(Out))]),
+        read_line_to_string(Out, Line),
+        close(Out)),
+    sub_string(Line, Before, _, _, ": "),
+    !,
+    Start is Before + 2,
+    sub_string(Line, Start, _, 0, Text),
+    atom_string(CPUs, Text).
 
 
 		 /*******************************

@@ -152,10 +152,10 @@ main :-
 %   kernel may hand a SIGTERM to another thread, whose handler then
 %   runs it.  With SWI-Prolog 9.0.4 a thread that has been created but
 %   has not run yet drops it.  A supervisor that stops the server right
-%   after it said it listens hit that window: on one core, 2 stops in
-%   30 were lost.  So main announces that it listens only once every
-%   other thread has run a goal it sent it (threads_settled/0): after
-%   that, 0 in 90.
+%   after it said it listens hit that window: on one core, 4 stops in
+%   60 were lost (a scratch loop; bench/RESULTS.md).  So main announces
+%   that it listens only once every other thread has run a goal it sent
+%   it (threads_settled/0): after that, 0 in 90.
 
 shutdown_signal(_Signal) :-
     thread_send_message(main, oro_server_stop).

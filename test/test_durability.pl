@@ -1,6 +1,7 @@
 :- use_module(library(plunit)).
 :- use_module(oro_test_support).
 :- use_module(oro_test_client).
+:- use_module('../bench/bench_common', [bench_pin_to_cpu/1, bench_cpus/1, bench_set_cpus/1]).
 :- use_module(library(oro)).
 
 /*  Tests for durability (issue #8): the database directory of
@@ -893,27 +894,19 @@ durability_quick_stop :-
 
 %   durability_on_cpu0(:Goal): run Goal with every thread of this process
 %   (and so the processes it starts) on CPU 0, if taskset(1) is there;
-%   all CPUs again afterwards.
+%   on the CPUs it had before afterwards.
 
 :- meta_predicate durability_on_cpu0(0).
 
 durability_on_cpu0(Goal) :-
     (   absolute_file_name(path(taskset), _, [access(execute),
                                                file_errors(fail)])
-    ->  current_prolog_flag(cpu_count, N),
-        Last is N - 1,
-        format(atom(All), '0-~d', [Last]),
-        setup_call_cleanup(durability_affinity('0'),
+    ->  bench_cpus(CPUs),
+        setup_call_cleanup(bench_pin_to_cpu(0),
                            once(Goal),
-                           durability_affinity(All))
+                           bench_set_cpus(CPUs))
     ;   once(Goal)
     ).
-
-durability_affinity(CPUs) :-
-    current_prolog_flag(pid, Pid),
-    process_create(path(taskset), ['-a', '-p', '-c', CPUs, Pid],
-                   [stdout(null), process(P)]),
-    process_wait(P, _).
 
 %   durability_signal_exit(+Signal, -Status-Reply): add a statement, send
 %   Signal to the server, wait for its exit Status; Reply is the answer

@@ -415,7 +415,7 @@ note_delta(Model, Layer, Sign0, S, P, O) :-
     ->  delta_queue(Queue),
         thread_send_message(Queue, d(Model, Sign, S, P, O))
     ;   delta_queue(Queue),
-        drain_queue(Queue, _),
+        oro_drain_queue(Queue, _),
         nb_setval(oro_events_delta_size, 0),
         nb_setval(oro_events_delta_overflow, true)
     ).
@@ -429,19 +429,6 @@ delta_queue(Queue) :-
     ->  Queue = Queue0
     ;   message_queue_create(Queue),
         nb_setval(oro_events_delta_queue, Queue)
-    ).
-
-%   drain_queue(+Queue, -Messages): take every message of Queue, oldest
-%   first, without waiting (only this thread reads Queue: a message
-%   peeked at is there to take; see oro_store's release_gc_pin/0 for
-%   why not thread_get_message/3 with timeout(0)).
-
-drain_queue(Queue, Messages) :-
-    (   thread_peek_message(Queue, Message)
-    ->  thread_get_message(Queue, Message),
-        Messages = [Message|Rest],
-        drain_queue(Queue, Rest)
-    ;   Messages = []
     ).
 
 followed(Model, P) :-
@@ -505,7 +492,7 @@ take_delta(Delta) :-
     ->  nb_setval(oro_events_delta_overflow, false),
         Delta = full
     ;   nb_current(oro_events_delta_queue, Queue)
-    ->  drain_queue(Queue, Delta)
+    ->  oro_drain_queue(Queue, Delta)
     ;   Delta = []
     ).
 

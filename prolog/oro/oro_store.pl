@@ -26,7 +26,8 @@
             oro_named/2,                % +LowerLocalName, -IRI
             oro_store_read/1,           % :Goal
             oro_store_rebuild/0,
-            oro_store_gate_exempt/0
+            oro_store_gate_exempt/0,
+            oro_drain_queue/2           % +Queue, -Messages
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(semweb/turtle)).
@@ -953,21 +954,31 @@ renew_gc_pin :-
     thread_send_message(oro_gc_pin, gc_pin(Pin)).
 
 release_gc_pin :-
-    (   thread_peek_message(oro_gc_pin, Pin)
-    ->  thread_get_message(oro_gc_pin, Pin),
-        Pin = gc_pin(Old),
-        catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
-              true),
-        release_gc_pin
-    ;   true
-    ).
+    oro_drain_queue(oro_gc_pin, Pins),
+    forall(member(gc_pin(Old), Pins),
+           catch(rdf_delete_snapshot(Old), error(existence_error(_, _), _),
+                 true)).
 
+%!  oro_drain_queue(+Queue, -Messages) is det.
+%
+%   Take every message of Queue, oldest first, without waiting.  Only
+%   for a queue that no other thread reads meanwhile (its owner's, or
+%   one read under a mutex), so that a message peeked at is still there
+%   to take.  (It peeks rather than calling
+%   thread_get_message/3 with timeout(0), which was seen to spin for
+%   ever in SWI-Prolog 9.0.4, while this module loads.)
+
+oro_drain_queue(Queue, Messages) :-
+    (   thread_peek_message(Queue, Message)
+    ->  thread_get_message(Queue, Message),
+        Messages = [Message|Rest],
+        oro_drain_queue(Queue, Rest)
+    ;   Messages = []
+    ).
 %   The pin is the one message gc_pin(Snapshot) of the queue
 %   oro_gc_pin, which only the holder of the `oro_write` mutex changes:
 %   a message queue, unlike a fact, leaves nothing for the clause
-%   garbage collector when the pin is replaced.  A message is peeked at
-%   before it is taken: thread_get_message/3 with timeout(0) was seen
-%   to spin for ever in SWI-Prolog 9.0.4 (while this module loads).
+%   garbage collector when the pin is replaced.
 
 :- initialization(( gc_pin_queue,
                     with_mutex(oro_write, renew_gc_pin)
