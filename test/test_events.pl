@@ -7,7 +7,8 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_store),
-              [oro_store_write/2, oro_store_assert/3, oro_store_retract/2]).
+              [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,
+               oro_graph/3]).
 :- use_module(library(settings)).
 :- use_module(library(random)).
 :- use_module(library(aggregate)).
@@ -2408,11 +2409,13 @@ test(watched_among_unwatched_predicates,
                    ], Log).
 %   What a change records for the watcher thread: only the triples of
 %   predicates some watcher depends on (the store's agents watcher
-%   follows rdf:type), and no owl:sameAs table while the model has no
-%   such individuals.
+%   follows rdf:type), each model and predicate touched once (whatever
+%   the graph of the model), and no owl:sameAs table while the model has
+%   no such individuals.
 
 test(delta_of_followed_predicates_only,
-     [ true(Delta == [d(myself, add, C1, IsOn, T1)])
+     [ true(Delta-Touched == [d(myself, add, C1, IsOn, T1)]-
+                             [myself-HasColor, myself-IsOn])
      ]) :-
     ev_inc_store,
     rdf_global_id(oro:c1, C1),
@@ -2425,9 +2428,17 @@ test(delta_of_followed_predicates_only,
         ( oro_register_event(myself, "NEW_INSTANCE", "ON_TOGGLE", x,
                              ["?x isOn t1"], Subscriber, _),
           oro_events_sync,                      % nothing pending any more
-          Layer = profile(longterm),
-          oro_events:note_delta(myself, Layer, add, C1, HasColor, literal(red)),
-          oro_events:note_delta(myself, Layer, add, C1, IsOn, T1),
+          oro_graph(myself, profile(longterm), Long),
+          oro_graph(myself, mask, Mask),
+          setup_call_cleanup(
+              nb_setval(oro_events_in_commit, true),
+              ( oro_events:note(Long, C1, HasColor, literal(red), add),
+                oro_events:note(Long, C1, IsOn, T1, add),
+                oro_events:note(Long, C1, HasColor, literal(blue), add),
+                oro_events:note(Mask, C1, HasColor, literal(red), add)
+              ),
+              nb_setval(oro_events_in_commit, false)),
+          oro_events:take_touched(Touched, _),
           oro_events:take_delta(Delta)
         ),
         ( oro_subscriber_destroy(Subscriber),

@@ -332,13 +332,12 @@ note(Source, S, P, O, Sign) :-
     ),
     !,
     source_graph(Source, G),
-    graph_model(G, Model, Layer),
-    touch(Model, P),
+    touch(G, P, Model, Layer, Followed),
     (   oro_schema_triple(P, O)
     ->  nb_setval(oro_events_touched_schema, true)
     ;   true
     ),
-    note_delta(Model, Layer, Sign, S, P, O),
+    note_delta(Followed, Model, Layer, Sign, S, P, O),
     (   nb_current(oro_events_in_commit, true)
     ->  true
     ;   flush_changes                       % a write outside a transaction
@@ -348,28 +347,47 @@ note(_, _, _, _, _).
 source_graph(G:_, G) :- !.
 source_graph(G, G).
 
-%   touch(+Model, +P): note that the transaction changed a triple of P
-%   in Model.  The pairs noted are the writing thread's global variable
-%   oro_events_touched, in reverse order; there are few in a
-%   transaction (one per model and predicate).
+%   touch(+G, +P, -Model, -Layer, -Followed): note that the transaction
+%   changed a triple of P in graph G, which is the Layer of Model;
+%   Followed is `true` if the triple must go in the delta (see
+%   note_delta/7).  What is noted is the writing thread's global
+%   variable oro_events_touched, a list of t(G, P, Model, Layer,
+%   Followed) in reverse order, one per graph and predicate: there are
+%   few in a transaction, and the graph's model and whether a watcher
+%   follows P are worked out once for all the triples of the pair.
+%   (No registration changes what the watchers follow meanwhile: it
+%   takes the `oro_write` mutex, which the writer holds.)
 
-touch(Model, P) :-
+touch(G, P, Model, Layer, Followed) :-
     (   nb_current(oro_events_touched, Touched)
     ->  true
     ;   Touched = []
     ),
-    (   memberchk(Model-P, Touched)
-    ->  true
-    ;   nb_setval(oro_events_touched, [Model-P|Touched])
+    (   memberchk(t(G, P, Model0, Layer0, Followed0), Touched)
+    ->  Model = Model0,
+        Layer = Layer0,
+        Followed = Followed0
+    ;   graph_model(G, Model, Layer),
+        (   Model \== '$none',
+            (   Model == '$all'
+            ->  true
+            ;   followed(Model, P)
+            )
+        ->  Followed = true
+        ;   Followed = false
+        ),
+        nb_setval(oro_events_touched,
+                  [t(G, P, Model, Layer, Followed)|Touched])
     ).
 
 %   take_touched(-Touched, -Schema): the Model-P pairs noted in this
-%   transaction, in the order noted, and whether a schema triple
-%   changed; both are reset.
+%   transaction, each once, in the order noted, and whether a schema
+%   triple changed; both are reset.
 
 take_touched(Touched, Schema) :-
-    (   nb_current(oro_events_touched, Touched0)
-    ->  reverse(Touched0, Touched)
+    (   nb_current(oro_events_touched, Noted)
+    ->  reverse(Noted, InOrder),
+        model_pairs(InOrder, [], Touched)
     ;   Touched = []
     ),
     (   nb_current(oro_events_touched_schema, true)
@@ -378,6 +396,14 @@ take_touched(Touched, Schema) :-
     ),
     nb_setval(oro_events_touched, []),
     nb_setval(oro_events_touched_schema, false).
+
+model_pairs([], _, []).
+model_pairs([t(_, P, Model, _, _)|Noted], Seen, Pairs) :-
+    (   memberchk(Model-P, Seen)
+    ->  Pairs = Pairs1
+    ;   Pairs = [Model-P|Pairs1]
+    ),
+    model_pairs(Noted, [Model-P|Seen], Pairs1).
 
 graph_model(G, Model, Layer) :-
     (   oro_graph_layer(G, Model0, Layer0)
@@ -390,25 +416,23 @@ graph_model(G, Model, Layer) :-
         Layer = none
     ).
 
-%   note_delta(+Model, +Layer, +Sign, +S, +P, +O): record the triple as
-%   added to or removed from the triples visible in Model (a triple
-%   put in a model's mask is removed from it).  Past max_delta/1
-%   triples, or for a change the watchers cannot follow triple by
-%   triple (the ontology layer, rdf_update), the list is dropped: the
-%   change is then evaluated in full.  A triple of a model none of
-%   whose watchers depends on its predicate is not recorded: no watcher
-%   would look at it (concerned/3, triggered/6).  What the watchers
-%   depend on is depended_on/2, which relevant/1 reads too; while the
-%   watcher thread has registrations or schema changes to process,
-%   every triple is recorded.
+%   note_delta(+Followed, +Model, +Layer, +Sign, +S, +P, +O): record
+%   the triple as added to or removed from the triples visible in Model
+%   (a triple put in a model's mask is removed from it).  Past
+%   max_delta/1 triples, or for a change the watchers cannot follow
+%   triple by triple (the ontology layer, rdf_update), the list is
+%   dropped: the change is then evaluated in full.  A triple is recorded
+%   only if Followed (see touch/5): a triple of a model none of whose
+%   watchers depends on its predicate is not, as no watcher would look
+%   at it (concerned/3, triggered/6).  What the watchers depend on is
+%   depended_on/2, which relevant/1 reads too; while the watcher thread
+%   has registrations or schema changes to process, every triple is
+%   recorded.
 
-note_delta(Model, Layer, Sign0, S, P, O) :-
-    (   nb_current(oro_events_delta_overflow, true)
+note_delta(Followed, Model, Layer, Sign0, S, P, O) :-
+    (   Followed == false
     ->  true
-    ;   Model == '$none'
-    ->  true
-    ;   Model \== '$all',
-        \+ followed(Model, P)
+    ;   nb_current(oro_events_delta_overflow, true)
     ->  true
     ;   delta_sign(Model, Layer, Sign0, Sign),
         delta_room
