@@ -439,6 +439,30 @@ test(term_template, [ setup(knowledge_testsuite),
                    oro_term_text(A1, T)
                  ), Pairs).
 
+%   One pattern: each value once, in order, whatever the number of its
+%   derivations (cup1 isAt t1 asserted and inferred from isOn), and
+%   no blank node, as a value or as the predicate that links a value.
+
+test(one_pattern_each_value_once,
+     [ setup(knowledge_commonsense),
+       true(Xs-Ps-Gs-Linked == [cup1, cup2]-[isAt, isOn]-[]-false)
+     ]) :-
+    rdf_bnode(Blank),
+    rdf_bnode(BlankP),
+    oro_add(myself, [rdf(Blank, oro:isOn, oro:t1), rdf(oro:cup3, BlankP, oro:t2),
+                     "cup1 isOn t1", "cup1 isAt t1", "cup2 isIn t1"]),
+    oro_find(myself, x, ["?x isAt t1"], XIRIs),
+    maplist(oro_iri_name, XIRIs, Xs),
+    oro_find(myself, p, ["cup1 ?p t1"], PIRIs),
+    maplist(oro_iri_name, PIRIs, Ps),
+    oro_find(myself, x, ["cup1 isAt t1"], Gs),
+    oro_find(myself, o, ["cup3 ?p ?o"], Os),
+    (   rdf_global_id(oro:t2, T2),
+        memberchk(T2, Os)
+    ->  Linked = true
+    ;   Linked = false
+    ).
+
 %   A join of two unbound patterns over the common-sense ontology takes
 %   seconds (2.5 s on the project's VM): it stops at the time limit,
 %   read after each solution.  (The outer limit only keeps a broken

@@ -137,11 +137,12 @@ oro_pattern_holds(Model, rdf(S, P, O)) :-
 %          `time_limit` setting, for two patterns or more.
 
 oro_find_values(Model, Template, Patterns, Values) :-
-    (   Patterns = [_, _|_]
-    ->  deadline(Deadline)
-    ;   Deadline = none
+    (   Patterns = [Pattern0]
+    ->  normal_pattern(Pattern0, rdf(S, P, O)),
+        oro_holds_bag(Model, Template, S, P, O, Values0)
+    ;   deadline(Deadline),
+        findall(Template, solve(Patterns, Model, Deadline), Values0)
     ),
-    findall(Template, solve(Patterns, Model, Deadline), Values0),
     sort(Values0, Values1),
     usable_values(Values1, Values).
 

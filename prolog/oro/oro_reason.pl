@@ -1,6 +1,7 @@
 :- module(oro_reason,
           [ oro_holds/4,                % +Model, ?S, ?P, ?O
             oro_holds_normal/4,         % +Model, ?S, ?P, ?O
+            oro_holds_bag/6,            % +Model, ?Template, ?S, ?P, ?O, -Bag
             oro_type/3,                 % +Model, ?X, ?Class
             oro_subclass/3,             % +Model, ?Sub, ?Super
             oro_subproperty/3,          % +Model, ?Sub, ?Super
@@ -1023,6 +1024,31 @@ oro_holds_normal(Model, S, P, O) :-
         sort(Triples0, Triples),
         member(S-P-O, Triples),
         \+ rdf_is_bnode(P)
+    ).
+
+%!  oro_holds_bag(+Model, ?Template, ?S, ?P, ?O, -Bag) is det.
+%
+%   Bag is the list of the instantiations of Template, a term sharing
+%   variables with S, P and O (normal, as for oro_holds_normal/4), for
+%   the triples S-P-O in the inference closure of Model, *with
+%   repetitions*: one per derivation, in no particular order.  The
+%   solutions of oro_holds_normal/4 without their sorting: for a caller
+%   that sorts what it keeps of them anyway (a find of one pattern).
+
+oro_holds_bag(Model, Template, S, P, O, Bag) :-
+    schema(Model, Key),
+    (   ground(S-P-O)
+    ->  (   holds(Key, Model, anc(0, []), S, P, O)
+        ->  Bag = [Template]
+        ;   Bag = []
+        )
+    ;   var(P)
+    ->  findall(Template,
+                ( holds(Key, Model, anc(0, []), S, P, O),
+                  \+ rdf_is_bnode(P)
+                ),
+                Bag)
+    ;   findall(Template, holds(Key, Model, anc(0, []), S, P, O), Bag)
     ).
 
 holds(Key, Model, Anc, S, P, O) :-
