@@ -1038,10 +1038,7 @@ oro_holds_normal(Model, S, P, O) :-
 oro_holds_bag(Model, Template, S, P, O, Bag) :-
     schema(Model, Key),
     (   ground(S-P-O)
-    ->  (   holds(Key, Model, anc(0, []), S, P, O)
-        ->  Bag = [Template]
-        ;   Bag = []
-        )
+    ->  findall(Template, once(holds(Key, Model, anc(0, []), S, P, O)), Bag)
     ;   var(P)
     ->  findall(Template,
                 ( holds(Key, Model, anc(0, []), S, P, O),
