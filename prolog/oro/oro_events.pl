@@ -380,15 +380,21 @@ touch(G, P, Model, Layer, Followed) :-
                   [t(G, P, Model, Layer, Followed)|Touched])
     ).
 
-%   take_touched(-Touched, -Schema): the Model-P pairs noted in this
-%   transaction, each once, in the order noted, and whether a schema
-%   triple changed; both are reset.
+%   take_touched(-Touched, -Followed, -Schema): the Model-P pairs noted
+%   in this transaction, each once, in the order noted; whether a
+%   watcher follows one of them (touch/5), and whether a schema triple
+%   changed.  What was noted is reset.
 
-take_touched(Touched, Schema) :-
+take_touched(Touched, Followed, Schema) :-
     (   nb_current(oro_events_touched, Noted)
     ->  reverse(Noted, InOrder),
         model_pairs(InOrder, [], Touched)
-    ;   Touched = []
+    ;   Noted = [],
+        Touched = []
+    ),
+    (   memberchk(t(_, _, _, _, true), Noted)
+    ->  Followed = true
+    ;   Followed = false
     ),
     (   nb_current(oro_events_touched_schema, true)
     ->  Schema = true
@@ -425,9 +431,9 @@ graph_model(G, Model, Layer) :-
 %   only if Followed (see touch/5): a triple of a model none of whose
 %   watchers depends on its predicate is not, as no watcher would look
 %   at it (concerned/3, triggered/6).  What the watchers depend on is
-%   depended_on/2, which relevant/1 reads too; while the watcher thread
-%   has registrations or schema changes to process, every triple is
-%   recorded.
+%   depended_on/2, which also decides whether the change is sent at all
+%   (flush_changes/0); while the watcher thread has registrations or
+%   schema changes to process, every triple is recorded.
 
 note_delta(Followed, Model, Layer, Sign0, S, P, O) :-
     (   Followed == false
@@ -488,13 +494,13 @@ delta_room :-
     nb_setval(oro_events_delta_size, N).
 
 flush_changes :-
-    take_touched(Touched, Schema),
+    take_touched(Touched, Followed, Schema),
     take_delta(Delta),
     (   Touched == []
     ->  true
     ;   (   Schema == true
         ;   pending
-        ;   relevant(Touched)
+        ;   Followed == true
         ;   \+ setting(index, true)           % the reference mode
         )
     ->  (   Schema == true
@@ -520,7 +526,8 @@ take_delta(Delta) :-
     ;   Delta = []
     ).
 
-%   A change that no watcher depends on is not sent at all.  The
+%   A change that no watcher depends on (none of its Model-P pairs
+%   followed, see touch/5) is not sent at all.  The
 %   dependencies are those of the watchers the watcher thread knows, so
 %   while it has not yet processed a registration or a schema change
 %   (which may change dependencies) every change is sent: the counter
@@ -530,14 +537,6 @@ take_delta(Delta) :-
 pending :-
     flag(oro_events_pending, N, N),
     N > 0.
-
-relevant(Touched) :-
-    member(Model-P, Touched),
-    (   Model == '$all'
-    ->  true
-    ;   depended_on(Model, P)
-    ),
-    !.
 
 %   depended_on(+Model, +P): some watcher of Model depends on triples
 %   of predicate P (or on any change), as the watcher thread last
@@ -1337,7 +1336,7 @@ item_anchor(_, _, _, _, none).
 
 %   set_index(+Id, +Model, +Index): install the index of watcher Id.
 %   New dependencies are added before the old ones go: writers read
-%   them (relevant/1) to decide whether to send a change, and must
+%   them (touch/5) to decide whether to send a change, and must
 %   never see a watcher with none.  Triggers and plans are the watcher
 %   thread's own.
 

@@ -1016,14 +1016,11 @@ oro_holds(Model, S0, P0, O0) :-
 %   names are not normalised again at each step.
 
 oro_holds_normal(Model, S, P, O) :-
-    schema(Model, Key),
     (   ground(S-P-O)
-    ->  holds(Key, Model, anc(0, []), S, P, O),
-        !
-    ;   findall(S-P-O, holds(Key, Model, anc(0, []), S, P, O), Triples0),
+    ->  holds_ground(Model, S, P, O)
+    ;   derivations(Model, S-P-O, S, P, O, Triples0),
         sort(Triples0, Triples),
-        member(S-P-O, Triples),
-        \+ rdf_is_bnode(P)
+        member(S-P-O, Triples)
     ).
 
 %!  oro_holds_bag(+Model, ?Template, ?S, ?P, ?O, -Bag) is det.
@@ -1036,17 +1033,26 @@ oro_holds_normal(Model, S, P, O) :-
 %   that sorts what it keeps of them anyway (a find of one pattern).
 
 oro_holds_bag(Model, Template, S, P, O, Bag) :-
-    schema(Model, Key),
     (   ground(S-P-O)
-    ->  findall(Template, once(holds(Key, Model, anc(0, []), S, P, O)), Bag)
-    ;   var(P)
-    ->  findall(Template,
-                ( holds(Key, Model, anc(0, []), S, P, O),
-                  \+ rdf_is_bnode(P)
-                ),
-                Bag)
-    ;   findall(Template, holds(Key, Model, anc(0, []), S, P, O), Bag)
+    ->  findall(Template, holds_ground(Model, S, P, O), Bag)
+    ;   derivations(Model, Template, S, P, O, Bag)
     ).
+
+holds_ground(Model, S, P, O) :-
+    schema(Model, Key),
+    holds(Key, Model, anc(0, []), S, P, O),
+    !.
+
+%   derivations(+Model, ?Template, ?S, ?P, ?O, -Bag): Template for each
+%   derivation of S-P-O, but those whose predicate is a blank node.
+
+derivations(Model, Template, S, P, O, Bag) :-
+    schema(Model, Key),
+    findall(Template,
+            ( holds(Key, Model, anc(0, []), S, P, O),
+              \+ rdf_is_bnode(P)
+            ),
+            Bag).
 
 holds(Key, Model, Anc, S, P, O) :-
     var(P),
