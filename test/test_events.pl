@@ -1971,6 +1971,25 @@ ev_inc_store :-
         ),
         delete_file(File)).
 
+%   ev_with_toggle_watcher(+Patterns, :Goal): run Goal once a
+%   NEW_INSTANCE ON_TOGGLE watcher of ?x on Patterns is registered in
+%   myself and the watcher thread has nothing pending any more.
+
+:- meta_predicate ev_with_toggle_watcher(+, 0).
+
+ev_with_toggle_watcher(Patterns, Goal) :-
+    message_queue_create(Q),
+    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( oro_register_event(myself, "NEW_INSTANCE", "ON_TOGGLE", x,
+                             Patterns, Subscriber, _),
+          oro_events_sync,
+          once(Goal)
+        ),
+        ( oro_subscriber_destroy(Subscriber),
+          message_queue_destroy(Q)
+        )).
+
 ev_inc_cleanup :-
     set_setting(oro_events:incremental, true),
     set_setting(oro_events:index, true),
@@ -2422,13 +2441,9 @@ test(delta_of_followed_predicates_only,
     rdf_global_id(oro:isOn, IsOn),
     rdf_global_id(oro:t1, T1),
     rdf_global_id(oro:hasColor, HasColor),
-    message_queue_create(Q),
-    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
-    call_cleanup(
-        ( oro_register_event(myself, "NEW_INSTANCE", "ON_TOGGLE", x,
-                             ["?x isOn t1"], Subscriber, _),
-          oro_events_sync,                      % nothing pending any more
-          oro_graph(myself, profile(longterm), Long),
+    ev_with_toggle_watcher(
+        ["?x isOn t1"],
+        ( oro_graph(myself, profile(longterm), Long),
           oro_graph(myself, mask, Mask),
           setup_call_cleanup(
               nb_setval(oro_events_in_commit, true),
@@ -2440,9 +2455,6 @@ test(delta_of_followed_predicates_only,
               nb_setval(oro_events_in_commit, false)),
           oro_events:take_touched(Touched, _, _),
           oro_events:take_delta(Delta)
-        ),
-        ( oro_subscriber_destroy(Subscriber),
-          message_queue_destroy(Q)
         )).
 %   What touch/5 works out for a pair holds for one transaction only:
 %   one that is rolled back leaves nothing noted for the next (rdf_db
@@ -2455,22 +2467,15 @@ test(rolled_back_change_notes_nothing,
     rdf_global_id(oro:c1, C1),
     rdf_global_id(oro:isOn, IsOn),
     rdf_global_id(oro:t1, T1),
-    message_queue_create(Q),
-    oro_subscriber_create(ev_to_queue(Q, f), Subscriber, [in_watcher(true)]),
-    call_cleanup(
-        ( oro_register_event(myself, "NEW_INSTANCE", "ON_TOGGLE", x,
-                             ["?x isOn t1"], Subscriber, _),
-          oro_events_sync,
-          \+ oro_store_write(test,
+    ev_with_toggle_watcher(
+        ["?x isOn t1"],
+        ( \+ oro_store_write(test,
                              ( oro_store_assert(myself, [rdf(C1, IsOn, T1)],
                                                 longterm),
                                fail
                              )),
           oro_events:take_touched(Touched, _, _),
           oro_events:take_delta(Delta)
-        ),
-        ( oro_subscriber_destroy(Subscriber),
-          message_queue_destroy(Q)
         )).
 test(same_as_table_only_with_same_individuals,
      [ true(Result == before(false, [])-after(true))
