@@ -2564,4 +2564,97 @@ test(followed_adds_retract_no_clause, [ setup(oro_reset),
     assertion(ev_get(Queue, ev(t, _, _))),
     message_queue_destroy(Queue).
 
+%   Watchers registered and dropped leave retracted clauses in the
+%   watcher thread's tables; the thread reclaims them, so that lookups
+%   (the monitor's, for every triple written) do not step over them.
+
+test(dropped_watchers_reclaimed, [ setup(oro_reset),
+                                   true(Left < Peak / 4)
+                                 ]) :-
+    oro_events_sync,
+    ev_watcher_tables_size(Before),
+    message_queue_create(Queue),
+    oro_subscriber_create(ev_to_queue(Queue, t), Subscriber, []),
+    forall(between(1, 100, K),
+           ( format(string(Pattern), "?o isOn place_~d", [K]),
+             oro_register_event(myself, new_instance, on_true, o, [Pattern],
+                                Subscriber, _)
+           )),
+    oro_events_sync,
+    ev_watcher_tables_size(Registered),
+    oro_clear_events(myself),
+    oro_events_sync,
+    ev_watcher_tables_size(After),
+    oro_subscriber_destroy(Subscriber),
+    message_queue_destroy(Queue),
+    Peak is Registered - Before,
+    Left is After - Before.
+
+%   The monitor asks whether anything is watched from a counter the
+%   watcher thread keeps: it must agree with the watchers at every step,
+%   whatever removes them.
+
+test(watcher_count_agrees, [ setup(oro_reset),
+                             true(Counts == [3, 3, 2, 1, 0])
+                           ]) :-
+    message_queue_create(Queue),
+    oro_subscriber_create(ev_to_queue(Queue, t), Subscriber, []),
+    oro_events_sync,
+    ev_user_watchers(Base),
+    ev_register_on_true(Subscriber, "?o isOn place_1", Id1),
+    ev_register_on_true(Subscriber, "?o isOn place_1", Id1),    % shared
+    ev_register_on_true(Subscriber, "?o isOn place_2", _),
+    oro_register_event(myself, fact_checking, on_true_one_shot, '',
+                       ["count_probe isOn place_3"], Subscriber, _),
+    ev_counted(Base, C1),
+    oro_events_sync,
+    ev_counted(Base, C2),
+    oro_add(myself, ["count_probe isOn place_3"]),  % fires, then dropped
+    assertion(ev_get(Queue, ev(t, _, _))),
+    oro_events_sync,
+    ev_counted(Base, C3),
+    oro_clear_event(myself, Id1),
+    oro_events_sync,
+    ev_counted(Base, C4),
+    oro_clear_events(myself),
+    oro_events_sync,
+    ev_counted(Base, C5),
+    oro_reset,
+    ev_watcher_count(Flag),
+    aggregate_all(count, oro_events:watcher(_, _, _, _, _), C6),
+    assertion(Flag == C6),
+    oro_subscriber_destroy(Subscriber),
+    message_queue_destroy(Queue),
+    Counts = [C1, C2, C3, C4, C5].
+
 :- end_tests(events_clause_churn).
+
+ev_watcher_tables_size(Size) :-
+    aggregate_all(sum(S),
+                  ( member(Head, [ watcher(_, _, _, _, _),
+                                   watcher_trigger(_, _, _, _, _),
+                                   watcher_dep(_, _, _)
+                                 ]),
+                    predicate_property(oro_events:Head, size(S))
+                  ),
+                  Size).
+
+ev_register_on_true(Subscriber, Pattern, Id) :-
+    oro_register_event(myself, new_instance, on_true, o, [Pattern],
+                       Subscriber, Id).
+
+ev_watcher_count(N) :-
+    flag(oro_events_watchers, N, N).
+
+%   ev_user_watchers(-N): the watchers there are before the test's (the
+%   agents' internal ones); ev_counted(+Base, -N): the test's watchers,
+%   after checking that the counter agrees with the clauses.
+
+ev_user_watchers(N) :-
+    aggregate_all(count, oro_events:watcher(_, _, _, _, _), N).
+
+ev_counted(Base, N) :-
+    ev_watcher_count(Flag),
+    aggregate_all(count, oro_events:watcher(_, _, _, _, _), All),
+    assertion(Flag == All),
+    N is All - Base.
