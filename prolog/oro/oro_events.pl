@@ -1054,8 +1054,8 @@ watcher_loop :-
 %   The collector starts by itself only when the retracted clauses
 %   weigh enough against all the program's clauses, which a store's
 %   name index makes large: 2,000 watchers registered and cleared left
-%   a batch add at 14-18 µs a statement instead of 8.6 until then, and
-%   the watcher thread at 11-13 µs more (bench_full: adds with two
+%   a batch add at 14-18 µs a statement instead of 8.6, and the watcher
+%   thread at 11-13 µs a statement instead of 1 (bench_full: adds with two
 %   requests in flight, measured after its event figures, fell from
 %   92,000 to 25,000-50,000 stmt/s).  So the watcher thread runs the
 %   collector itself once max_dropped/1 watchers were dropped since it
