@@ -1053,13 +1053,12 @@ watcher_loop :-
 %   collector runs, and it looks past the first clause for another one.
 %   The collector starts by itself only when the retracted clauses
 %   weigh enough against all the program's clauses, which a store's
-%   name index makes large: 2,000 watchers registered and cleared left
-%   a batch add at 14-18 µs a statement instead of 8.6, and the watcher
-%   thread at 11-13 µs a statement instead of 1 (bench_full: adds with two
-%   requests in flight, measured after its event figures, fell from
-%   92,000 to 25,000-50,000 stmt/s).  So the watcher thread runs the
-%   collector itself once max_dropped/1 watchers were dropped since it
-%   last did (about 4 ms for 1,000 watchers).
+%   name index makes large.  So the watcher thread runs the collector
+%   itself once max_dropped/1 watchers were dropped since it last did.
+%   What the dropped watchers cost before (a scratch script, and
+%   bench_full's adds with two requests in flight, which it measures
+%   after registering and clearing 2,000 watchers) is in
+%   bench/RESULTS.md, "Dropped watchers left work behind".
 
 watching :-
     flag(oro_events_watchers, N, N),

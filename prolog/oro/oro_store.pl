@@ -975,6 +975,7 @@ oro_drain_queue(Queue, Messages) :-
         oro_drain_queue(Queue, Rest)
     ;   Messages = []
     ).
+
 %   The pin is the one message gc_pin(Snapshot) of the queue
 %   oro_gc_pin, which only the holder of the `oro_write` mutex changes:
 %   a message queue, unlike a fact, leaves nothing for the clause
