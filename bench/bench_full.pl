@@ -47,8 +47,9 @@
     --pin=CPU runs this process and every process it starts on that
     one CPU (see bench_common:bench_pin_to_cpu/1): the socket figures
     and their echo floor are then measured with the same placement,
-    which the scheduler does not promise otherwise.  Throughput (bulk add, 8 clients) is lower
-    there, as the client and the server take turns on one core.
+    which the scheduler does not promise otherwise.  Throughput (bulk
+    add, 8 clients) is lower there, as the client and the server take
+    turns on one core.
 
     A table on stdout, progress on stderr, and everything in the JSON
     file (default bench/results.json): the machine line, the floors,

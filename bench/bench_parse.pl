@@ -133,16 +133,15 @@ labelled(Statements0, Statements) :-
             Statements).
 
 quoted_elements(Statements, Quote, Separator, Text) :-
-    maplist(quoted_element(Quote), Statements, Elements),
+    quoted(Quote, Statements, Elements),
     atomic_list_concat(Elements, Separator, Inner),
     atomics_to_string(["[", Inner, "]"], Text).
 
-quoted_element("\"", Statement, Element) :-
-    split_string(Statement, "\"", "", Parts),
-    atomic_list_concat(Parts, "\\\"", Escaped),
-    atomics_to_string(["\"", Escaped, "\""], Element).
-quoted_element("'", Statement, Element) :-
-    atomics_to_string(["'", Statement, "'"], Element).
+quoted("\"", Statements, Elements) :-
+    bench_quoted(Statements, Elements).
+quoted("'", Statements, Elements) :-
+    maplist([S, E]>>atomics_to_string(["'", S, "'"], E), Statements,
+            Elements).
 
 %   code_by_code_elements(+Inner): the inside of a collection decoded
 %   the general way, code by code: what the fast paths stand for.
