@@ -497,15 +497,22 @@ pipelined_load(C, W, pipelined{statements:N, seconds:Seconds, per_s:Rate,
     progress("size ~D: pipelined adds", [W.size]),
     From is W.objects + 1,
     To is W.objects + 5000,
-    findall(S, ( between(From, To, I),
-                 object_statements(W, I, Ss),
-                 member(S, Ss)
-               ), Statements),
+    objects_statements(W, From, To, Statements),
     length(Statements, N),
     bench_batches(Statements, 100, Batches),
     bench_time(pipeline(C, Batches, 0, InFlight), Micros),
     Seconds is Micros / 1.0e6,
     Rate is N / max(1.0e-6, Seconds).
+
+%   objects_statements(+World, +From, +To, -Statements): the statements
+%   of the objects From..To (object_statements/3), beyond the world's
+%   own when From > World.objects.
+
+objects_statements(W, From, To, Statements) :-
+    findall(S, ( between(From, To, I),
+                 object_statements(W, I, Ss),
+                 member(S, Ss)
+               ), Statements).
 
 %   pipeline(+Conn, +Batches, +Sent, +InFlight): send Batches, never
 %   more than InFlight unanswered, and read every reply.
@@ -552,10 +559,7 @@ writers_load(Port, W, writers{statements:N, seconds:Seconds, per_s:Rate,
 writer_batches(W, K, Batches) :-
     From is W.objects + 5001 + (K - 1) * 2500,
     To is From + 2499,
-    findall(S, ( between(From, To, I),
-                 object_statements(W, I, Ss),
-                 member(S, Ss)
-               ), Statements),
+    objects_statements(W, From, To, Statements),
     bench_batches(Statements, 100, Batches).
 
 %   run_writers(+Port, +Work): a thread a client, each connecting (a

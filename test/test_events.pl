@@ -2600,7 +2600,7 @@ test(watcher_count_agrees, [ setup(oro_reset),
     message_queue_create(Queue),
     oro_subscriber_create(ev_to_queue(Queue, t), Subscriber, []),
     oro_events_sync,
-    ev_user_watchers(Base),
+    ev_watcher_clauses(Base),             % the agents' internal ones
     ev_register_on_true(Subscriber, "?o isOn place_1", Id1),
     ev_register_on_true(Subscriber, "?o isOn place_1", Id1),    % shared
     ev_register_on_true(Subscriber, "?o isOn place_2", _),
@@ -2621,7 +2621,7 @@ test(watcher_count_agrees, [ setup(oro_reset),
     ev_counted(Base, C5),
     oro_reset,
     ev_watcher_count(Flag),
-    aggregate_all(count, oro_events:watcher(_, _, _, _, _), C6),
+    ev_watcher_clauses(C6),
     assertion(Flag == C6),
     oro_subscriber_destroy(Subscriber),
     message_queue_destroy(Queue),
@@ -2646,15 +2646,15 @@ ev_register_on_true(Subscriber, Pattern, Id) :-
 ev_watcher_count(N) :-
     flag(oro_events_watchers, N, N).
 
-%   ev_user_watchers(-N): the watchers there are before the test's (the
-%   agents' internal ones); ev_counted(+Base, -N): the test's watchers,
-%   after checking that the counter agrees with the clauses.
+%   ev_watcher_clauses(-N): the watchers there are, as watcher/5 holds
+%   them; ev_counted(+Base, -N): those beyond Base, after checking that
+%   the counter agrees with the clauses.
 
-ev_user_watchers(N) :-
+ev_watcher_clauses(N) :-
     aggregate_all(count, oro_events:watcher(_, _, _, _, _), N).
 
 ev_counted(Base, N) :-
     ev_watcher_count(Flag),
-    aggregate_all(count, oro_events:watcher(_, _, _, _, _), All),
+    ev_watcher_clauses(All),
     assertion(Flag == All),
     N is All - Base.
