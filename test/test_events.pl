@@ -2057,10 +2057,7 @@ ev_inc_register(Subscriber, Ids) :-
 
 ev_inc_register(Set, Subscriber, Ids) :-
     findall(Type-Trigger-Var-Patterns,
-            ( (   ev_inc_watch(Type, Var, Patterns)
-              ;   Set == reference,
-                  ev_ref_watch(Type, Var, Patterns)
-              ),
+            ( ev_inc_set_watch(Set, Type, Var, Patterns),
               ev_inc_triggers(Type, Triggers),
               member(Trigger, Triggers)
             ), Watchers),
@@ -2068,6 +2065,29 @@ ev_inc_register(Set, Subscriber, Ids) :-
                   oro_register_event(myself, Type, Trigger, Var, Patterns,
                                      Subscriber, Id)
                 ), Ids).
+
+ev_inc_set_watch(base, Type, Var, Patterns) :-
+    ev_inc_watch(Type, Var, Patterns).
+ev_inc_set_watch(reference, Type, Var, Patterns) :-
+    (   ev_inc_watch(Type, Var, Patterns)
+    ;   ev_ref_watch(Type, Var, Patterns)
+    ).
+ev_inc_set_watch(classes, Type, Var, Patterns) :-
+    ev_cls_watch(Type, Var, Patterns).
+
+%   The watchers of the set `classes`: on rdf:type, only watchers whose
+%   triggers are all classes (a type with its subject a variable and
+%   its class given), so that the writers decide for each type triple
+%   whether to send it (oro_events:type_filter/3).
+
+ev_cls_watch(new_instance, x, ["?x rdf:type Cup"]).
+ev_cls_watch(new_instance, x, ["?x rdf:type Person"]).
+ev_cls_watch(new_instance, y, ["?x isUnder ?y", "?y rdf:type Table"]).
+ev_cls_watch(new_instance, x, ["?x rdf:type Place", "i1 isAt ?x"]).
+ev_cls_watch(new_instance, x, ["?x isOn i1"]).
+ev_cls_watch(new_class_instance, '', ["Obj"]).
+ev_cls_watch(fact_checking, '', ["?x rdf:type Person"]).
+ev_cls_watch(fact_checking, '', ["i1 isAt ?y", "?y rdf:type Place"]).
 
 %   Random changes.  The generator keeps the statements that may be
 %   asserted, to remove some of them; it starts from the ontology's
@@ -2097,6 +2117,7 @@ ev_inc_predicates(base, [isOn, isUnder, isAt, isNextTo, contains,
 ev_inc_predicates(reference, [isOn, isUnder, isAt, isNextTo, contains,
                               componentOf, isInside, holds, locatedIn,
                               isHeldBy]).
+ev_inc_predicates(classes, [isOn, isUnder, isAt, holds, locatedIn]).
 
 ev_inc_statements(Set, Min, Max, Ss) :-
     random_between(Min, Max, N),
@@ -2128,6 +2149,12 @@ ev_inc_schema(reference, [ "Mug rdfs:subClassOf Table",
                            "isNextTo rdf:type owl:SymmetricProperty",
                            "componentOf rdfs:subPropertyOf contains"
                          ]).
+ev_inc_schema(classes, [ "Mug rdfs:subClassOf Table",
+                         "Table rdfs:subClassOf Cup",
+                         "Person rdfs:subClassOf Place",
+                         "holds rdfs:domain Cup",
+                         "isAt rdfs:range Place"
+                       ]).
 
 ev_inc_pick(Pool, Min, Max, Ss) :-
     random_between(Min, Max, N),
@@ -2153,6 +2180,7 @@ ev_inc_ops(Set, Seed, N, Ops) :-
 
 ev_inc_range(base, 100).
 ev_inc_range(reference, 130).
+ev_inc_range(classes, 110).
 
 ev_inc_ops_(0, _, _, []) :-
     !.
@@ -2234,6 +2262,7 @@ ev_inc_run(How, Ops, Log) :-
                   ( nth1(Step, Ops, Op),
                     ev_inc_apply(Op),
                     oro_events_sync,
+                    ev_inc_after(Set),
                     ev_inc_drain(Q, Ids, Firings)
                   ), Log)
         ),
@@ -2253,6 +2282,22 @@ ev_inc_mode(indexed, reference) :-             % the other reference watchers
 ev_inc_mode(reference, reference) :-
     set_setting(oro_events:index, false),
     set_setting(oro_events:incremental, true).
+ev_inc_mode(filtered, classes) :-
+    set_setting(oro_events:index, true),
+    set_setting(oro_events:incremental, true).
+ev_inc_mode(unfiltered, classes) :-
+    set_setting(oro_events:index, false),
+    set_setting(oro_events:incremental, true).
+
+%   ev_inc_after(+Set): after each change of the set `classes`, a query
+%   compiles the shared schema tables of the robot's model (as the
+%   server's queries do), which the writers' filter of type triples
+%   needs to be at work.
+
+ev_inc_after(classes) :-
+    !,
+    once(oro_subclass(myself, oro:'Cup', _)).
+ev_inc_after(_).
 
 ev_inc_drain(Q, Ids, Firings) :-
     (   thread_get_message(Q, ev(f, Id, Content), [timeout(0)])
@@ -2308,11 +2353,42 @@ ev_ref_compare(Seed, N, Result) :-
     ).
 
 ev_ref_schema_op(Op) :-
+    ev_ref_schema_op(reference, Op).
+
+ev_ref_schema_op(Set, Op) :-
     (   Op = add([S])
     ;   Op = remove([S])
     ),
-    ev_inc_schema(reference, Axioms),
+    ev_inc_schema(Set, Axioms),
     memberchk(S, Axioms).
+
+%   ev_cls_compare(+Seed, +N, -Result): the same for the set `classes`,
+%   the writers filtering type triples against the reference mode,
+%   which sends every change and evaluates every watcher in full.
+
+ev_cls_compare(Seed, N, Result) :-
+    ev_inc_ops(classes, Seed, N, Ops),
+    ev_inc_run(filtered, Ops, Filtered),
+    ev_inc_run(unfiltered, Ops, Reference),
+    (   Filtered == Reference
+    ->  aggregate_all(sum(L), ( member(_-Fs, Reference), length(Fs, L) ), Count),
+        aggregate_all(count, ( member(Op, Ops), ev_ref_schema_op(classes, Op) ),
+                      Schema),
+        Result = same(Count, Schema)
+    ;   nth1(Step, Filtered, I),
+        nth1(Step, Reference, F),
+        I \== F
+    ->  nth1(Step, Ops, Op),
+        Result = differ(Seed, Step, Op, filtered(I), reference(F))
+    ;   Result = differ(Seed, lengths)
+    ).
+
+ev_cls_fires(Seed, N) :-
+    ev_cls_compare(Seed, N, Result),
+    assertion(Result = same(_, _)),
+    Result = same(Count, Schema),
+    assertion(Count > 0),
+    assertion(Schema > 0).
 
 ev_ref_fires(Seed, N) :-
     ev_ref_compare(Seed, N, Result),
@@ -2346,6 +2422,78 @@ test(index_against_reference_seed_14) :-
     ev_ref_fires(14, 60).
 
 :- end_tests(events_incremental).
+
+%   The writers' filter of type triples (oro_events:type_filter/3): a
+%   type triple is sent to the watcher thread only if its class is under
+%   a class some watcher is anchored by, when every watcher on rdf:type
+%   is anchored by classes.
+
+:- begin_tests(events_type_filter,
+               [ cleanup(ev_inc_cleanup)
+               ]).
+
+%   ev_cls_followed(-Followed): how the writers follow rdf:type in the
+%   robot's model now, once the shared schema is compiled.
+
+ev_cls_followed(Followed) :-
+    oro_events_sync,
+    once(oro_subclass(myself, oro:'Cup', _)),
+    rdf_equal(rdf:type, Type),
+    oro_events:pair_followed(myself, Type, Followed).
+
+ev_cls_register(Subscriber, Patterns) :-
+    oro_register_event(myself, new_instance, on_true, x, Patterns,
+                       Subscriber, _).
+
+test(filter_only_with_class_anchors,
+     [ true(Followed1-Followed2 = classes(_)-true)
+     ]) :-
+    ev_inc_store,
+    oro_subscriber_create(ev_to_queue(_, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( ev_cls_register(Subscriber, ["?x rdf:type Cup"]),
+          ev_cls_followed(Followed1),
+          ev_cls_register(Subscriber, ["i2 rdf:type ?c"]),
+          ev_cls_followed(Followed2)
+        ),
+        oro_subscriber_destroy(Subscriber)).
+test(type_triple_sent_by_its_class,
+     [ true(Sent == [true, false, true, false])
+     ]) :-
+    ev_inc_store,
+    oro_subscriber_create(ev_to_queue(_, f), Subscriber, [in_watcher(true)]),
+    call_cleanup(
+        ( ev_cls_register(Subscriber, ["?x rdf:type Cup"]),
+          ev_cls_followed(classes(Key)),
+          findall(F, ( member(Sign-Class, [add-'Mug', add-'Place',
+                                           update-'Place', del-'Obj']),
+                       rdf_global_id(oro:Class, C),
+                       oro_events:triple_followed(classes(Key), myself, Sign,
+                                                  C, F)
+                     ), Sent)
+        ),
+        ( nb_setval(oro_events_followed_type, false),
+          oro_subscriber_destroy(Subscriber)
+        )).
+test(new_agent_class) :-
+    ev_stop,
+    oro_init([]),
+    oro_add(myself, ["Droid rdfs:subClassOf Human"]),
+    ev_cls_followed(Followed),
+    assertion(Followed = classes(_)),
+    oro_add(myself, ["r2d2 rdf:type Droid", "cup9 rdf:type Cup"]),
+    oro_agents(Agents),
+    assertion(memberchk(r2d2, Agents)),
+    assertion(\+ memberchk(cup9, Agents)).
+
+test(random_changes_against_reference_seed_21) :-
+    ev_cls_fires(21, 60).
+test(random_changes_against_reference_seed_22) :-
+    ev_cls_fires(22, 60).
+test(random_changes_against_reference_seed_23) :-
+    ev_cls_fires(23, 60).
+
+:- end_tests(events_type_filter).
 
 %   ev_inc_session(+Watchers, +Ops, -Log): from a fresh store on the
 %   small world, register Watchers (Type-Trigger-Var-Patterns), apply

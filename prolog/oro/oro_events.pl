@@ -111,7 +111,11 @@ change, by what may change it:
     triggered by `s rdf:type D` only when D is under Cup:
     anchor class(Cup).  The watcher thread looks the triggers of each
     changed triple up by hash (predicate, anchor), so 1,000 watchers on
-    `isOn` with different tables cost one lookup each change.
+    `isOn` with different tables cost one lookup each change.  When
+    every trigger on rdf:type of a model's watchers is a class, the
+    writers look the class of each type triple up themselves
+    (type_filter/3): the objects perception types, which no watcher of
+    theirs asks for, are neither queued nor sent.
   - a *plan*: how each pattern can gain solutions from added triples.
 
 A triggered watcher is then evaluated from the change's triples
@@ -166,6 +170,8 @@ and ranges.
     watcher_value/2,                % Value, Id
     watcher_dep/3,                  % Model, PredicateOrAny, Id
     watcher_trigger/5,              % Key, Model, Predicate, Anchor, Id
+    watcher_type_class/3,           % Class, Model, Id
+    watcher_type_open/2,            % Model, Id
     watcher_plan/2,                 % Id, Plan
     subscription/2,                 % Id, Subscriber
     subscriber/4,                   % Subscriber, Queue, Thread, Owner
@@ -332,7 +338,8 @@ note(Source, S, P, O, Sign) :-
     ),
     !,
     source_graph(Source, G),
-    touch(G, P, Model, Layer, Followed),
+    touch(G, P, Model, Layer, Followed0),
+    triple_followed(Followed0, Model, Sign, O, Followed),
     (   oro_schema_triple(P, O)
     ->  nb_setval(oro_events_touched_schema, true)
     ;   true
@@ -349,8 +356,9 @@ source_graph(G, G).
 
 %   touch(+G, +P, -Model, -Layer, -Followed): note that the transaction
 %   changed a triple of P in graph G, which is the Layer of Model;
-%   Followed is `true` if the triple must go in the delta (see
-%   note_delta/7).  What is noted is the writing thread's global
+%   Followed is `true` if the triples of the pair must go in the delta
+%   (see note_delta/7), classes(Key) if that is decided for each
+%   (triple_followed/5).  What is noted is the writing thread's global
 %   variable oro_events_touched, a list of t(G, P, Model, Layer,
 %   Followed) in reverse order, one per graph and predicate: there are
 %   few in a transaction, and the graph's model and whether a watcher
@@ -368,17 +376,68 @@ touch(G, P, Model, Layer, Followed) :-
         Layer = Layer0,
         Followed = Followed0
     ;   graph_model(G, Model, Layer),
-        (   Model \== '$none',
-            (   Model == '$all'
-            ->  true
-            ;   followed(Model, P)
-            )
-        ->  Followed = true
-        ;   Followed = false
-        ),
+        pair_followed(Model, P, Followed),
         nb_setval(oro_events_touched,
                   [t(G, P, Model, Layer, Followed)|Touched])
     ).
+
+%   pair_followed(+Model, +P, -Followed): whether a watcher follows the
+%   triples of P in Model: `true`, `false`, or, for rdf:type, classes(Key)
+%   when the watchers that follow it are all anchored by classes (see
+%   type_filter/3).
+
+pair_followed('$none', _, false) :-
+    !.
+pair_followed('$all', _, true) :-
+    !.
+pair_followed(Model, P, Followed) :-
+    (   pending
+    ->  Followed = true
+    ;   depended_on(Model, P)
+    ->  (   type_filter(Model, P, Key)
+        ->  Followed = classes(Key)
+        ;   Followed = true
+        )
+    ;   Followed = false
+    ).
+
+%   type_filter(+Model, +P, -Key): P is rdf:type and every trigger of
+%   Model's watchers on it is a class anchor: a type triple `s rdf:type
+%   D` then only concerns a watcher when D is under one of their
+%   classes (see triggered/6, which decides the same in the watcher
+%   thread), which is looked up for each triple in the schema tables
+%   Key, if compiled already.  Perception types every object it sees,
+%   and the agents' internal watcher follows rdf:type for `Agent` only:
+%   its typed objects need neither go in the delta nor wake the watcher
+%   thread.  Only where the watcher thread would select the watchers by
+%   their triggers (the incremental mode).
+
+type_filter(Model, P, Key) :-
+    rdf_equal(P, rdf:type),
+    \+ watcher_dep(Model, any, _),
+    \+ watcher_type_open(Model, _),
+    setting(incremental, true),
+    setting(index, true),
+    oro_compiled_schema(Model, Key).
+
+%   triple_followed(+PairFollowed, +Model, +Sign, +O, -Followed): whether
+%   the triple goes in the delta.  For classes(Key), a type triple does
+%   if its class is under a watched class (or if it is an update, which
+%   the watcher thread evaluates in full); it is then noted as
+%   followed, for take_touched/3.
+
+triple_followed(classes(Key), Model, Sign, O, Followed) :-
+    !,
+    (   (   Sign == update
+        ;   atom(O),
+            oro_schema_superclass(Key, O, C),
+            watcher_type_class(C, Model, _)
+        )
+    ->  nb_setval(oro_events_followed_type, true),
+        Followed = true
+    ;   Followed = false
+    ).
+triple_followed(Followed, _, _, _, Followed).
 
 %   take_touched(-Touched, -Followed, -Schema): the Model-P pairs noted
 %   in this transaction, each once, in the order noted; whether a
@@ -392,7 +451,9 @@ take_touched(Touched, Followed, Schema) :-
     ;   Noted = [],
         Touched = []
     ),
-    (   memberchk(t(_, _, _, _, true), Noted)
+    (   (   memberchk(t(_, _, _, _, true), Noted)
+        ;   nb_current(oro_events_followed_type, true)
+        )
     ->  Followed = true
     ;   Followed = false
     ),
@@ -401,6 +462,7 @@ take_touched(Touched, Followed, Schema) :-
     ;   Schema = false
     ),
     nb_setval(oro_events_touched, []),
+    nb_setval(oro_events_followed_type, false),
     nb_setval(oro_events_touched_schema, false).
 
 model_pairs([], _, []).
@@ -459,12 +521,6 @@ delta_queue(Queue) :-
     ->  Queue = Queue0
     ;   message_queue_create(Queue),
         nb_setval(oro_events_delta_queue, Queue)
-    ).
-
-followed(Model, P) :-
-    (   pending
-    ->  true
-    ;   depended_on(Model, P)
     ).
 
 delta_sign(Model, Layer, Sign0, Sign) :-
@@ -1123,6 +1179,8 @@ request(reset, stop(Stops)) :-
     retractall(watcher_value(_, _)),
     retractall(watcher_dep(_, _, _)),
     retractall(watcher_trigger(_, _, _, _, _)),
+    retractall(watcher_type_class(_, _, _)),
+    retractall(watcher_type_open(_, _)),
     retractall(watcher_plan(_, _)),
     retractall(subscription(_, _)),
     forall(retract(model_schema(_, Key)), oro_drop_schema(Key)),
@@ -1208,6 +1266,8 @@ drop_watcher(Id) :-
     retractall(watcher_value(_, Id)),
     retractall(watcher_dep(_, _, Id)),
     retractall(watcher_trigger(_, _, _, _, Id)),
+    retractall(watcher_type_class(_, _, Id)),
+    retractall(watcher_type_open(_, Id)),
     retractall(watcher_plan(Id, _)),
     retractall(subscription(Id, _)).
 
@@ -1388,6 +1448,7 @@ set_index(Id, Model, index(Deps, Triggers, Plan)) :-
            assertz(watcher_dep(Model, D, Id))),
     forall(( member(D, Old), \+ memberchk(D, Deps) ),
            retractall(watcher_dep(Model, D, Id))),
+    set_type_triggers(Id, Model, Triggers),
     retractall(watcher_trigger(_, _, _, _, Id)),
     forall(member(Q-Anchor, Triggers),
            ( trigger_key(Model, Q, Anchor, Key),
@@ -1395,6 +1456,39 @@ set_index(Id, Model, index(Deps, Triggers, Plan)) :-
            )),
     retractall(watcher_plan(Id, _)),
     assertz(watcher_plan(Id, Plan)).
+
+%   set_type_triggers(+Id, +Model, +Triggers): the writers' copy of the
+%   triggers of watcher Id on rdf:type (type_filter/3): a class(C)
+%   anchor as watcher_type_class(C, Model, Id), any other as
+%   watcher_type_open(Model, Id).  New facts are added before stale ones
+%   go, as for the dependencies.
+
+set_type_triggers(Id, Model, Triggers) :-
+    rdf_equal(rdf:type, Type),
+    findall(C, member(Type-class(C), Triggers), Classes0),
+    sort(Classes0, Classes),
+    (   member(Type-Anchor, Triggers),
+        Anchor \= class(_)
+    ->  Open = true
+    ;   Open = false
+    ),
+    (   Open == true,
+        \+ watcher_type_open(Model, Id)
+    ->  assertz(watcher_type_open(Model, Id))
+    ;   true
+    ),
+    forall(( member(C, Classes),
+             \+ watcher_type_class(C, Model, Id)
+           ),
+           assertz(watcher_type_class(C, Model, Id))),
+    forall(( watcher_type_class(C, Model, Id),
+             \+ ord_memberchk(C, Classes)
+           ),
+           retractall(watcher_type_class(C, Model, Id))),
+    (   Open == false
+    ->  retractall(watcher_type_open(Model, Id))
+    ;   true
+    ).
 
 trigger_key(Model, Q, Anchor, Key) :-
     term_hash(t(Model, Q, Anchor), Key).

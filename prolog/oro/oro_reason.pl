@@ -22,6 +22,8 @@
             oro_literal_match/2,        % +Pattern, +Literal
             oro_meta_namespace/1,       % +IRI
             oro_compile_schema/2,       % +Model, -Key
+            oro_compiled_schema/2,      % +Model, -Key
+            oro_schema_superclass/3,    % +Key, +Class, -Super
             oro_drop_schema/1,          % +Key
             oro_with_schemas/2,         % +ModelKeys, :Goal
             oro_pattern_dependencies/3, % +Model, +Triples, -Predicates
@@ -221,6 +223,29 @@ oro_compile_schema(Model, Key) :-
     must_be(atom, Model),
     flag(oro_schema_key, Key, Key+1),
     compile_schema(Model, Key).
+
+%!  oro_compiled_schema(+Model, -Key) is semidet.
+%
+%   Key identifies the shared schema tables of Model for the current
+%   schema generation, if a thread has compiled them already; fails
+%   otherwise.  Unlike the other predicates of this module it never
+%   compiles: for the events monitor, which must stay cheap and does
+%   something safe instead.
+
+oro_compiled_schema(Model, Key) :-
+    must_be(atom, Model),
+    oro_schema_generation(Gen),
+    schema_key(Model, Gen, Key),
+    !.
+
+%!  oro_schema_superclass(+Key, +Class, -Super) is nondet.
+%
+%   Super is a (reflexive, transitive) super-class of the atom Class
+%   in the schema tables Key, as oro_subclass/3 enumerates them.
+
+oro_schema_superclass(Key, Class, Super) :-
+    must_be(atom, Class),
+    sub_class_of(Key, Class, Super).
 
 %!  oro_drop_schema(+Key) is det.
 %
