@@ -2486,6 +2486,14 @@ test(new_agent_class) :-
     assertion(memberchk(r2d2, Agents)),
     assertion(\+ memberchk(cup9, Agents)).
 
+test(filter_back_after_schema_change) :-
+    ev_stop,
+    oro_init([]),
+    oro_add(myself, ["human1 rdf:type Human"]),   % its model: a schema change
+    oro_events_sync,
+    rdf_equal(rdf:type, Type),
+    test_wait_until(oro_events:pair_followed(myself, Type, classes(_)), 10).
+
 test(random_changes_against_reference_seed_21) :-
     ev_cls_fires(21, 60).
 test(random_changes_against_reference_seed_22) :-

@@ -172,6 +172,7 @@ and ranges.
     watcher_trigger/5,              % Key, Model, Predicate, Anchor, Id
     watcher_type_class/3,           % Class, Model, Id
     watcher_type_open/2,            % Model, Id
+    type_filter_model/1,            % Model (with watcher_type_class/3)
     watcher_plan/2,                 % Id, Plan
     subscription/2,                 % Id, Subscriber
     subscriber/4,                   % Subscriber, Queue, Thread, Owner
@@ -1095,10 +1096,27 @@ watcher_start :-
 watcher_loop :-
     thread_get_message(oro_watcher_queue, Message),
     catch(( handle(Message),
-            collect_dropped
+            collect_dropped,
+            warm_type_filters
           ),
           E, handle_error(E)),
     watcher_loop.
+
+%   warm_type_filters: the writers' filter of type triples (type_filter/3)
+%   needs the shared schema tables of its model, which a schema change
+%   anywhere makes stale (agents' models get theirs when created), and
+%   which a writer's monitor never compiles.  Once it has nothing else
+%   to do, the watcher thread compiles them again (3.6 ms for the
+%   common-sense ontology), so that the next writes are filtered.
+
+warm_type_filters :-
+    (   thread_peek_message(oro_watcher_queue, _)
+    ->  true
+    ;   forall(( type_filter_model(Model),
+                 \+ oro_compiled_schema(Model, _)
+               ),
+               oro_shared_schema(Model, _))
+    ).
 
 %   How many watchers there are is counted (the flag
 %   oro_events_watchers) by this thread, which alone asserts and
@@ -1181,6 +1199,7 @@ request(reset, stop(Stops)) :-
     retractall(watcher_trigger(_, _, _, _, _)),
     retractall(watcher_type_class(_, _, _)),
     retractall(watcher_type_open(_, _)),
+    retractall(type_filter_model(_)),
     retractall(watcher_plan(_, _)),
     retractall(subscription(_, _)),
     forall(retract(model_schema(_, Key)), oro_drop_schema(Key)),
@@ -1268,6 +1287,10 @@ drop_watcher(Id) :-
     retractall(watcher_trigger(_, _, _, _, Id)),
     retractall(watcher_type_class(_, _, Id)),
     retractall(watcher_type_open(_, Id)),
+    forall(( type_filter_model(Model),
+             \+ watcher_type_class(_, Model, _)
+           ),
+           retractall(type_filter_model(Model))),
     retractall(watcher_plan(Id, _)),
     retractall(subscription(Id, _)).
 
@@ -1481,6 +1504,11 @@ set_type_triggers(Id, Model, Triggers) :-
              \+ watcher_type_class(C, Model, Id)
            ),
            assertz(watcher_type_class(C, Model, Id))),
+    (   Classes \== [],
+        \+ type_filter_model(Model)
+    ->  assertz(type_filter_model(Model))
+    ;   true
+    ),
     forall(( watcher_type_class(C, Model, Id),
              \+ ord_memberchk(C, Classes)
            ),

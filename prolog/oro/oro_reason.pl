@@ -23,6 +23,7 @@
             oro_meta_namespace/1,       % +IRI
             oro_compile_schema/2,       % +Model, -Key
             oro_compiled_schema/2,      % +Model, -Key
+            oro_shared_schema/2,        % +Model, -Key
             oro_schema_superclass/3,    % +Key, +Class, -Super
             oro_drop_schema/1,          % +Key
             oro_with_schemas/2,         % +ModelKeys, :Goal
@@ -237,6 +238,16 @@ oro_compiled_schema(Model, Key) :-
     oro_schema_generation(Gen),
     schema_key(Model, Gen, Key),
     !.
+
+%!  oro_shared_schema(+Model, -Key) is det.
+%
+%   Key identifies the shared schema tables of Model for the current
+%   schema generation, compiled now if no thread has yet (the tables
+%   every query of Model uses).
+
+oro_shared_schema(Model, Key) :-
+    must_be(atom, Model),
+    schema(Model, Key).
 
 %!  oro_schema_superclass(+Key, +Class, -Super) is nondet.
 %
