@@ -2469,6 +2469,7 @@ test(filter_back_after_schema_change) :-
     oro_init([]),
     oro_add(myself, ["human1 rdf:type Human"]),   % its model: a schema change
     oro_events_sync,
+    oro_add(myself, ["cup1 rdf:type Cup"]),       % asks for the schema
     rdf_equal(rdf:type, Type),
     test_wait_until(oro_events:pair_followed(myself, Type, classes(_)), 10).
 

@@ -111,9 +111,10 @@ change, by what may change it:
     triggered by `s rdf:type D` only when D is under Cup:
     anchor class(Cup).  The watcher thread looks the triggers of each
     changed triple up by hash (predicate, anchor), so 1,000 watchers on
-    `isOn` with different tables cost one lookup each change.  When
-    every trigger on rdf:type of a model's watchers is a class, the
-    writers look the class of each type triple up themselves
+    `isOn` with different tables cost one lookup each change; a type
+    triple's class anchors by each super-class of its class
+    (class_watcher/4).  When every trigger on rdf:type of a model's
+    watchers is a class, the writers make that lookup themselves
     (type_filter/3): the objects perception types, which no watcher of
     theirs asks for, are neither queued nor sent.
   - a *plan*: how each pattern can gain solutions from added triples.
@@ -172,7 +173,6 @@ and ranges.
     watcher_trigger/5,              % Key, Model, Predicate, Anchor, Id
     watcher_type_class/3,           % Class, Model, Id
     watcher_type_open/2,            % Model, Id
-    type_filter_model/1,            % Model (with watcher_type_class/3)
     watcher_plan/2,                 % Id, Plan
     subscription/2,                 % Id, Subscriber
     subscriber/4,                   % Subscriber, Queue, Thread, Owner
@@ -411,7 +411,12 @@ pair_followed(Model, P, Followed) :-
 %   and the agents' internal watcher follows rdf:type for `Agent` only:
 %   its typed objects need neither go in the delta nor wake the watcher
 %   thread.  Only where the watcher thread would select the watchers by
-%   their triggers (the incremental mode).
+%   their triggers (the incremental mode).  The monitor never compiles
+%   the schema: if the shared tables are stale (a schema change anywhere
+%   makes them so, as an agent's model created), the pair is followed
+%   as a whole, and the watcher thread is asked to compile them
+%   (warm(Model), 3.6 ms for the common-sense ontology), for the next
+%   writes.
 
 type_filter(Model, P, Key) :-
     rdf_equal(P, rdf:type),
@@ -419,7 +424,11 @@ type_filter(Model, P, Key) :-
     \+ watcher_type_open(Model, _),
     setting(incremental, true),
     setting(index, true),
-    oro_compiled_schema(Model, Key).
+    (   oro_compiled_schema(Model, Key0)
+    ->  Key = Key0
+    ;   thread_send_message(oro_watcher_queue, warm(Model)),
+        fail
+    ).
 
 %   triple_followed(+PairFollowed, +Model, +Sign, +O, -Followed): whether
 %   the triple goes in the delta.  For classes(Key), a type triple does
@@ -430,9 +439,7 @@ type_filter(Model, P, Key) :-
 triple_followed(classes(Key), Model, Sign, O, Followed) :-
     !,
     (   (   Sign == update
-        ;   atom(O),
-            oro_schema_superclass(Key, O, C),
-            watcher_type_class(C, Model, _)
+        ;   class_watcher(Key, Model, O, _)
         )
     ->  nb_setval(oro_events_followed_type, true),
         Followed = true
@@ -1096,27 +1103,10 @@ watcher_start :-
 watcher_loop :-
     thread_get_message(oro_watcher_queue, Message),
     catch(( handle(Message),
-            collect_dropped,
-            warm_type_filters
+            collect_dropped
           ),
           E, handle_error(E)),
     watcher_loop.
-
-%   warm_type_filters: the writers' filter of type triples (type_filter/3)
-%   needs the shared schema tables of its model, which a schema change
-%   anywhere makes stale (agents' models get theirs when created), and
-%   which a writer's monitor never compiles.  Once it has nothing else
-%   to do, the watcher thread compiles them again (3.6 ms for the
-%   common-sense ontology), so that the next writes are filtered.
-
-warm_type_filters :-
-    (   thread_peek_message(oro_watcher_queue, _)
-    ->  true
-    ;   forall(( type_filter_model(Model),
-                 \+ oro_compiled_schema(Model, _)
-               ),
-               oro_shared_schema(Model, _))
-    ).
 
 %   How many watchers there are is counted (the flag
 %   oro_events_watchers) by this thread, which alone asserts and
@@ -1169,6 +1159,11 @@ handle(change(Snapshot, Touched, Schema, Delta)) :-
                    )
                  )),
     run_direct_deliveries.
+handle(warm(Model)) :-
+    (   oro_compiled_schema(Model, _)
+    ->  true
+    ;   oro_shared_schema(Model, _)
+    ).
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
     ->  Result = Result0
@@ -1199,7 +1194,6 @@ request(reset, stop(Stops)) :-
     retractall(watcher_trigger(_, _, _, _, _)),
     retractall(watcher_type_class(_, _, _)),
     retractall(watcher_type_open(_, _)),
-    retractall(type_filter_model(_)),
     retractall(watcher_plan(_, _)),
     retractall(subscription(_, _)),
     forall(retract(model_schema(_, Key)), oro_drop_schema(Key)),
@@ -1287,10 +1281,6 @@ drop_watcher(Id) :-
     retractall(watcher_trigger(_, _, _, _, Id)),
     retractall(watcher_type_class(_, _, Id)),
     retractall(watcher_type_open(_, Id)),
-    forall(( type_filter_model(Model),
-             \+ watcher_type_class(_, Model, _)
-           ),
-           retractall(type_filter_model(Model))),
     retractall(watcher_plan(Id, _)),
     retractall(subscription(Id, _)).
 
@@ -1473,16 +1463,19 @@ set_index(Id, Model, index(Deps, Triggers, Plan)) :-
            retractall(watcher_dep(Model, D, Id))),
     set_type_triggers(Id, Model, Triggers),
     retractall(watcher_trigger(_, _, _, _, Id)),
-    forall(member(Q-Anchor, Triggers),
+    forall(( member(Q-Anchor, Triggers),
+             Anchor \= class(_)
+           ),
            ( trigger_key(Model, Q, Anchor, Key),
              assertz(watcher_trigger(Key, Model, Q, Anchor, Id))
            )),
     retractall(watcher_plan(Id, _)),
     assertz(watcher_plan(Id, Plan)).
 
-%   set_type_triggers(+Id, +Model, +Triggers): the writers' copy of the
-%   triggers of watcher Id on rdf:type (type_filter/3): a class(C)
-%   anchor as watcher_type_class(C, Model, Id), any other as
+%   set_type_triggers(+Id, +Model, +Triggers): the triggers of watcher Id
+%   on rdf:type, which the writers read too (type_filter/3): a class(C)
+%   anchor as watcher_type_class(C, Model, Id) (class_watcher/4, the
+%   only place class anchors are kept), any other as
 %   watcher_type_open(Model, Id).  New facts are added before stale ones
 %   go, as for the dependencies.
 
@@ -1504,11 +1497,6 @@ set_type_triggers(Id, Model, Triggers) :-
              \+ watcher_type_class(C, Model, Id)
            ),
            assertz(watcher_type_class(C, Model, Id))),
-    (   Classes \== [],
-        \+ type_filter_model(Model)
-    ->  assertz(type_filter_model(Model))
-    ;   true
-    ),
     forall(( watcher_type_class(C, Model, Id),
              \+ ord_memberchk(C, Classes)
            ),
@@ -1648,21 +1636,32 @@ triggered_watchers(Model, Added, Removed, Same, Ids) :-
                 ), Ids).
 
 triggered(Model, Same, S, P, O, Id) :-
-    triple_anchor(Model, Same, S, P, O, Anchor),
-    trigger_key(Model, P, Anchor, Key),
-    watcher_trigger(Key, Model, P, Anchor, Id).
+    (   triple_anchor(Same, S, O, Anchor),
+        trigger_key(Model, P, Anchor, Key),
+        watcher_trigger(Key, Model, P, Anchor, Id)
+    ;   rdf_equal(P, rdf:type),
+        model_schema(Model, SchemaKey),
+        class_watcher(SchemaKey, Model, O, Id)
+    ).
 
-triple_anchor(_, _, _, _, _, none).
-triple_anchor(_, Same, S, _, O, res(R)) :-
+triple_anchor(_, _, _, none).
+triple_anchor(Same, S, O, res(R)) :-
     (   X = S
     ;   X = O
     ),
     atom(X),
     same_individual(Same, X, R).
-triple_anchor(Model, _, _, P, O, class(C)) :-
-    rdf_equal(P, rdf:type),
-    atom(O),
-    oro_subclass(Model, O, C).
+
+%   class_watcher(+SchemaKey, +Model, +Class, -Id): watcher Id of Model is
+%   anchored by a super-class of Class (in the schema tables SchemaKey):
+%   a triple `s rdf:type Class` may change it.  The watcher thread asks
+%   it with the schema of the change (triggered/6), the writers with the
+%   shared one (triple_followed/5).
+
+class_watcher(SchemaKey, Model, Class, Id) :-
+    atom(Class),
+    oro_schema_superclass(SchemaKey, Class, Super),
+    watcher_type_class(Super, Model, Id).
 
 %   Watchers are evaluated in the order they were registered, so that
 %   two firings of one change reach a subscriber in a stable order.
