@@ -415,8 +415,7 @@ pair_followed(Model, P, Followed) :-
 %   the schema: if the shared tables are stale (a schema change anywhere
 %   makes them so, as an agent's model created), the pair is followed
 %   as a whole, and the watcher thread is asked to compile them
-%   (warm(Model), 3.6 ms for the common-sense ontology), for the next
-%   writes.
+%   (warm(Model)) for the next writes.
 
 type_filter(Model, P, Key) :-
     rdf_equal(P, rdf:type),
