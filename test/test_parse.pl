@@ -778,6 +778,35 @@ test(collections_quoted_fast_path_taken, true) :-
     \+ quoted_fast("[\"a\",]"),
     \+ quoted_fast("[\"a\" \"b\"]"),
     \+ quoted_fast("[\"a\",\t\"b\"]").
+test(collections_one_quote_random, Bad == []) :-
+    one_quote_corpus(3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
+              outcome(general_collection(Text, E2), E2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(collections_one_quote_random_hit_fast_path, true(Fast >= 150)) :-
+    one_quote_corpus(3000, Texts),
+    aggregate_all(count,
+                  ( member(Text, Texts),
+                    one_quote_fast(Text)
+                  ),
+                  Fast).
+test(collections_one_quote_fast_path_taken, true) :-
+    one_quote_fast("[a rdf:type Cup, a rdfs:label \"cup 1\", b isOn a]"),
+    one_quote_fast("[a rdfs:label 'cup 1' , b]"),
+    one_quote_fast("[a p \"x\"\"y\", b]"),
+    \+ one_quote_fast("[a rdfs:label 'cup, 1', b]"),  % a comma in a run
+    \+ one_quote_fast("[\"a\", b]"),                 % opens an element
+    \+ one_quote_fast("[a, \"b\"]"),
+    \+ one_quote_fast("[a \"b\", \"c\"]"),
+    \+ one_quote_fast("[a \"b]"),                      % never closed
+    \+ one_quote_fast("[a \"b\", c 'd']").             % both quotes
+test(collections_one_quote_commas_inside_runs,
+     true(E == ["a rdfs:label 'cup, 1'", "b"])) :-
+    oro_parse_collection(list, "[a rdfs:label 'cup, 1', b]", E).
 test(set_keeps_first_occurrences, true(E == ["b", "a", "c"])) :-
     oro_parse_collection(set, "[b, a, b, c, a]", E).
 test(set_without_duplicates, true(E == ["c", "a", "b"])) :-
@@ -889,6 +918,23 @@ random_separators(Count, Separators) :-
 interleave([E], [], [E]).
 interleave([E|Es], [S|Ss], [E, S|Parts]) :-
     interleave(Es, Ss, Parts).
+
+%   one_quote_corpus(+N, -Texts): N collections over `a`, `b`, space,
+%   comma and one quote (the same in a text), the quote more frequent.
+
+one_quote_corpus(N, Texts) :-
+    set_random(seed(2468)),
+    length(Texts, N),
+    maplist(one_quote_text, Texts).
+
+one_quote_text(Text) :-
+    random_member(Alphabet, ["ab ,\"\"", "ab ,''"]),
+    random_text(Alphabet, 20, Inner),
+    atomics_to_string(["[", Inner, "]"], Text).
+
+one_quote_fast(Text) :-
+    oro_parse:framed(Text, 0'[, 0'], Inner),
+    oro_parse:one_quote_elements(Inner, _).
 
 quoted_fast(Text) :-
     oro_parse:framed(Text, 0'[, 0'], Inner),

@@ -112,30 +112,33 @@ tokenize(Text, Delimiter, Tokens) :-
     ;   general_tokenize(Text, Delimiter, Tokens)
     ).
 
-%   scan_tokenize(+Text, +Delimiter, -Tokens): tokenize/3 looking only
-%   at the characters that can change the tokenizer's state or split:
-%   the tracked ones and Delimiter.  split_string/4 finds them (Text
-%   has no NUL, see one_part/2); between two of them lies plain text,
-%   which counts nothing and leaves a previous character that is not
-%   `\`.  A set of quoted statements has a few such characters per
-%   statement, against some thirty codes for general_tokenize/3.
+%   scan_tokenize(+Text, +Delimiter, -Tokens): tokenize/3 stepping only
+%   through the characters that can change the tokenizer's state: the
+%   tracked ones, found by split_string/4 (Text has no NUL, see
+%   one_part/2).  Between two of them lies a segment of plain text,
+%   which changes no state and leaves a previous character that is not
+%   `\`: where the state is zero, every delimiter in it splits, and one
+%   more split_string/4 finds them all.  A set of statements with one
+%   quoted label is then a few Prolog steps, not one a statement.
 
 scan_tokenize(Text, Delimiter, Tokens) :-
-    char_code(Char, Delimiter),
-    string_concat("[]{}\"'\\", Char, Tracked),
-    split_string(Text, Tracked, "", [First|Parts]),
+    char_code(Sep, Delimiter),
+    split_string(Text, "[]{}\"'\\", "", [First|Parts]),
+    segment_cuts(First, Sep, 0, Cuts, Cuts1),
     string_length(First, Pos),
-    scan_cuts(Parts, Text, Pos, Delimiter, -1, s(0, 0, 0, 0), Cuts),
+    scan_cuts(Parts, Text, Pos, Delimiter-Sep, -1, s(0, 0, 0, 0), Cuts1),
     cut_tokens(Cuts, Text, 0, Tokens).
 
-%   scan_cuts(+Parts, +Text, +Pos, +Delimiter, +Prev, +State, -Cuts)
+%   scan_cuts(+Parts, +Text, +Pos, +Delimiter-Sep, +Prev, +State, -Cuts)
 %
 %   The tracked character at offset Pos of Text is followed by the
-%   plain text of the first of Parts.  Cuts are the offsets of the
-%   delimiters Text splits at, as tokenizer_step/6 decides them.
+%   segment that is the first of Parts.  Cuts are the offsets of the
+%   delimiters Text splits at, as tokenizer_step/6 decides them.  (A
+%   delimiter that is itself a tracked character is decided here, and
+%   no segment holds one.)
 
 scan_cuts([], _, _, _, _, _, []).
-scan_cuts([Part|Parts], Text, Pos, D, Prev, State0, Cuts) :-
+scan_cuts([Part|Parts], Text, Pos, D-Sep, Prev, State0, Cuts) :-
     Index is Pos+1,
     code_at(Index, Text, C),
     tokenizer_step(C, Prev, D, State0, State, Split),
@@ -143,13 +146,33 @@ scan_cuts([Part|Parts], Text, Pos, D, Prev, State0, Cuts) :-
     ->  Cuts = [Pos|Cuts1]
     ;   Cuts = Cuts1
     ),
+    (   State == s(0, 0, 0, 0)
+    ->  segment_cuts(Part, Sep, Index, Cuts1, Cuts2)
+    ;   Cuts2 = Cuts1
+    ),
     string_length(Part, Length),
     (   Length =:= 0
     ->  Prev1 = C
     ;   Prev1 = -1
     ),
     Pos1 is Index+Length,
-    scan_cuts(Parts, Text, Pos1, D, Prev1, State, Cuts1).
+    scan_cuts(Parts, Text, Pos1, D-Sep, Prev1, State, Cuts2).
+
+%   segment_cuts(+Segment, +Sep, +Start, -Cuts, ?Tail): Cuts, ending in
+%   Tail, are the offsets in Text of the delimiters Sep in Segment, a
+%   segment at offset Start of Text where the state is zero.
+
+segment_cuts(Segment, Sep, Start, Cuts, Tail) :-
+    split_string(Segment, Sep, "", [First|Rest]),
+    string_length(First, Length),
+    Pos is Start+Length,
+    rest_cuts(Rest, Pos, Cuts, Tail).
+
+rest_cuts([], _, Tail, Tail).
+rest_cuts([Piece|Pieces], Pos, [Pos|Cuts], Tail) :-
+    string_length(Piece, Length),
+    Next is Pos+1+Length,
+    rest_cuts(Pieces, Next, Cuts, Tail).
 
 %   code_at(+Index, +Text, -Code): string_code/3 in constant time.  In
 %   SWI-Prolog 9.0.4, string_code/3 on a string takes time in
@@ -196,13 +219,18 @@ plain_text(Text) :-
     one_part(Text, Specials).
 
 %   plain_specials(-Chars): `[]{}"'\` and the codes 1-31, as a string.
-%   local_specials(-Chars): those and `:#<^@`.  (Both computed at
+%   local_specials(-Chars): those and `:#<^@`.  quote_specials(-Chars):
+%   those of plain_specials/1 but the quotes.  (All three computed at
 %   compile time.  NUL cannot be in such a set: split_string/4 reads its
 %   separators up to the first NUL.)
 
 term_expansion(plain_specials(generated), plain_specials(Specials)) :-
     plain_special_codes(Codes),
     string_codes(Specials, Codes).
+term_expansion(quote_specials(generated), quote_specials(Specials)) :-
+    plain_special_codes(Codes),
+    subtract(Codes, `"'`, Quoteless),
+    string_codes(Specials, Quoteless).
 term_expansion(local_specials(generated), local_specials(Specials)) :-
     plain_special_codes(Codes),
     append(Codes, `:#<^@`, Local),
@@ -213,6 +241,7 @@ plain_special_codes([0'[, 0'], 0'{, 0'}, 0'", 0'\', 0'\\|Controls]) :-
 
 plain_specials(generated).
 local_specials(generated).
+quote_specials(generated).
 
 %   one_part(+Text, +Separators): Text has none of Separators and no
 %   NUL.  SWI-Prolog 9.0.4's split_string/4 takes NUL for a separator
@@ -487,6 +516,8 @@ collection_elements(Text, Elements) :-
         ->  Elements = Elements0
         ;   plain_text(Inner)               % split, trim: one C call
         ->  split_string(Inner, ",", " ", Elements)
+        ;   one_quote_elements(Inner, Elements0)
+        ->  Elements = Elements0
         ;   general_elements(Inner, Elements)
         )
     ;   throw(error(type_error(oro_collection, Text), _))
@@ -523,6 +554,59 @@ quoted_elements(Inner, Elements) :-
     split_string(Inner, Quote, "", [Before|Parts]),
     split_string(Before, "", " ", [""]),
     quoted_parts(Parts, q(Quote, Escapes, Other, Others), Elements).
+
+%   one_quote_elements(+Inner, -Elements): the fast path for the inside
+%   of a collection whose only special characters are quotes of one
+%   kind, none of which opens an element, with no comma between a quote
+%   and the next: a set of statements sent unquoted, one of them with a
+%   label, `a rdf:type Cup, a rdfs:label "cup 1", b isOn a`.  (No
+%   bracket, brace, backslash or control character: see
+%   quote_specials/1.)  The tokenizer's only state is then the quote's
+%   flag, which is off at every comma, so the text splits at each one;
+%   and as no element starts with a quote nor has an escape,
+%   cleanValue only trims the spaces around it.  A text that starts a
+%   quoted run and never ends it has an odd number of parts between
+%   quotes, and fails.  Fails on anything else.
+
+one_quote_elements(Inner, Elements) :-
+    quote_specials(Specials),
+    one_part(Inner, Specials),
+    (   \+ sub_atom_icasechk(Inner, _, "'")
+    ->  Quote = "\""
+    ;   \+ sub_atom_icasechk(Inner, _, "\"")
+    ->  Quote = "'"
+    ),
+    split_string(Inner, Quote, "", [Before|Runs]),
+    \+ opens_first(Before),
+    quoted_runs(Runs),
+    split_string(Inner, ",", " ", Elements).
+
+%   opens_first(+Before): the quote after Before, the text before the
+%   first quote, starts an element.  opens_next(+Between): so does the
+%   quote after Between, the text between a quoted run and the next.
+
+opens_first(Before) :-
+    split_string(Before, "", " ", [Trimmed]),
+    (   Trimmed == ""
+    ->  true
+    ;   sub_string(Trimmed, _, 1, 0, ",")
+    ).
+
+opens_next(Between) :-
+    split_string(Between, "", " ", [Trimmed]),
+    sub_string(Trimmed, _, 1, 0, ",").
+
+%   quoted_runs(+Runs): Runs are the inside of a quoted run, what comes
+%   after it, and so on; no inside has a comma, no quote but the first
+%   opens an element.
+
+quoted_runs([Inside, After|Runs]) :-
+    \+ sub_atom_icasechk(Inside, _, ","),
+    (   Runs == []
+    ->  true
+    ;   \+ opens_next(After),
+        quoted_runs(Runs)
+    ).
 
 %   opening_quote(+Inner, -Code): the first character of Inner that is
 %   not a space (the clients write none).
