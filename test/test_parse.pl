@@ -674,9 +674,18 @@ random_code(Pool, Code) :-
     random_member(Code, Pool).
 
 random_corpus(Alphabet, MaxLength, N, Texts) :-
-    set_random(seed(1234)),
+    seeded_corpus(1234, N, random_text(Alphabet, MaxLength), Texts).
+
+%   seeded_corpus(+Seed, +N, :Make, -Texts): N texts made by call(Make,
+%   Text), the random generator seeded with Seed first, so that a corpus
+%   is the same from one run to the next.
+
+:- meta_predicate seeded_corpus(+, +, 1, -).
+
+seeded_corpus(Seed, N, Make, Texts) :-
+    set_random(seed(Seed)),
     length(Texts, N),
-    maplist(random_text(Alphabet, MaxLength), Texts).
+    maplist(Make, Texts).
 
 statement_alphabet("ab1 ?:#<>^@\"'\\[]{},.\t-e\u00e9").
 
@@ -740,32 +749,18 @@ test(variables_shared_the_same, true(Ts == [rdf(X, P, O), rdf(X, P, O)])) :-
     oro_parse:parse_statement("a p b", rdf(_, P, _)).
 test(collections_random, Bad == []) :-
     random_corpus("ab ,\"'\\[]{}\t\u0000n", 16, 3000, Inners),
-    findall(Text-Fast-General,
-            ( member(Inner, Inners),
-              atomics_to_string(["[", Inner, "]"], Text),
-              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
-              outcome(general_collection(Text, E2), E2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    findall(Text, ( member(Inner, Inners),
+                    atomics_to_string(["[", Inner, "]"], Text)
+                  ), Texts),
+    collection_disagreements(Texts, Bad).
 test(collections_quoted_random, Bad == []) :-
     quoted_corpus(3000, Texts),
-    findall(Text-Fast-General,
-            ( member(Text, Texts),
-              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
-              outcome(general_collection(Text, E2), E2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    collection_disagreements(Texts, Bad).
 test(collections_quoted_escapes, true(E == ["obj1 rdfs:label \"cup\"", "b"])) :-
     oro_parse_collection(list, "[\"obj1 rdfs:label \\\"cup\\\"\", \"b\"]", E).
 test(collections_quoted_random_hit_fast_path, true(Fast >= 300)) :-
     quoted_corpus(3000, Texts),
-    aggregate_all(count,
-                  ( member(Text, Texts),
-                    quoted_fast(Text)
-                  ),
-                  Fast).
+    aggregate_all(count, ( member(Text, Texts), quoted_fast(Text) ), Fast).
 test(collections_quoted_fast_path_taken, true) :-
     quoted_fast("[\"obj1 rdf:type Cup\",\"obj1 isOn table1\"]"),  % liboro
     quoted_fast("[\"obj1 rdfs:label \\\"cup\\\"\",\"b\"]"),
@@ -780,20 +775,10 @@ test(collections_quoted_fast_path_taken, true) :-
     \+ quoted_fast("[\"a\",\t\"b\"]").
 test(collections_one_quote_random, Bad == []) :-
     one_quote_corpus(3000, Texts),
-    findall(Text-Fast-General,
-            ( member(Text, Texts),
-              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
-              outcome(general_collection(Text, E2), E2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    collection_disagreements(Texts, Bad).
 test(collections_one_quote_random_hit_fast_path, true(Fast >= 150)) :-
     one_quote_corpus(3000, Texts),
-    aggregate_all(count,
-                  ( member(Text, Texts),
-                    one_quote_fast(Text)
-                  ),
-                  Fast).
+    aggregate_all(count, ( member(Text, Texts), one_quote_fast(Text) ), Fast).
 test(collections_one_quote_fast_path_taken, true) :-
     one_quote_fast("[a rdf:type Cup, a rdfs:label \"cup 1\", b isOn a]"),
     one_quote_fast("[a rdfs:label 'cup 1' , b]"),
@@ -873,9 +858,7 @@ local(Text) :-
 %   bare or differently quoted element.
 
 quoted_corpus(N, Texts) :-
-    set_random(seed(4321)),
-    length(Texts, N),
-    maplist(quoted_text, Texts).
+    seeded_corpus(4321, N, quoted_text, Texts).
 
 quoted_text(Text) :-
     random_member(Quote, ["\"", "'"]),
@@ -923,9 +906,7 @@ interleave([E|Es], [S|Ss], [E, S|Parts]) :-
 %   comma and one quote (the same in a text), the quote more frequent.
 
 one_quote_corpus(N, Texts) :-
-    set_random(seed(2468)),
-    length(Texts, N),
-    maplist(one_quote_text, Texts).
+    seeded_corpus(2468, N, one_quote_text, Texts).
 
 one_quote_text(Text) :-
     random_member(Alphabet, ["ab ,\"\"", "ab ,''"]),
@@ -939,6 +920,19 @@ one_quote_fast(Text) :-
 quoted_fast(Text) :-
     oro_parse:framed(Text, 0'[, 0'], Inner),
     oro_parse:quoted_elements(Inner, _).
+
+%   collection_disagreements(+Texts, -Bad): Bad are Text-Fast-General
+%   for each of Texts that oro_parse_collection/3 (list) and
+%   general_collection/2 decode differently (outcome/3 of each).
+
+collection_disagreements(Texts, Bad) :-
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse_collection(list, Text, E1), E1, Fast),
+              outcome(general_collection(Text, E2), E2, General),
+              Fast \=@= General
+            ),
+            Bad).
 
 %   general_collection(+Text, -Elements): oro_parse_collection/3 (list)
 %   the general way only.
