@@ -463,13 +463,20 @@ handle_request(request(Method, _), Context, Out) :-
     with_mutex(Context.mutex, oro_write_closing(Out)),
     fail.
 handle_request(request(Method, Params), Context, Out) :-
-    with_mutex(Context.mutex,
-               (   closed_connection(Context.mutex)
-               ->  fail                     % the server is shutting down
-               ;   oro_store_read(oro_dispatch(Context, Method, Params, Reply)),
-                   (   Reply = ok(Value)
-                   ->  oro_write_ok(Out, Value)
-                   ;   Reply = error(Name, Message),
-                       oro_write_error(Out, Name, Message)
-                   )
-               )).
+    Mutex = Context.mutex,
+    with_mutex(Mutex, answer(Mutex, Context, Method, Params, Out)).
+
+%   answer(+Mutex, +Context, +Method, +Params, +Out) is semidet: call the
+%   method and write its reply, holding the connection's Mutex; fail if
+%   the server is shutting down.  (A named predicate, as a meta-called
+%   if-then-else would be compiled again on every request.)
+
+answer(Mutex, Context, Method, Params, Out) :-
+    \+ closed_connection(Mutex),
+    oro_store_read(oro_dispatch(Context, Method, Params, Reply)),
+    write_reply(Reply, Out).
+
+write_reply(ok(Value), Out) :-
+    oro_write_ok(Out, Value).
+write_reply(error(Name, Message), Out) :-
+    oro_write_error(Out, Name, Message).

@@ -233,10 +233,11 @@ oro_add(Model0, Statements, Profile0) :-
     oro_resolve_model(Model0, Model),
     oro_memory_profile(Profile0, Profile),
     complete_triples(Statements, Triples),
-    oro_store_write(add(Model),
-                    ( oro_store_assert(Model, Triples, Profile),
-                      oro_memory_remember(Model, Profile, Triples)
-                    )).
+    oro_store_write(add(Model), add_triples(Model, Triples, Profile)).
+
+add_triples(Model, Triples, Profile) :-
+    oro_store_assert(Model, Triples, Profile),
+    oro_memory_remember(Model, Profile, Triples).
 
 %!  oro_remove(+Model, +Statements) is det.
 %
