@@ -772,25 +772,42 @@ oro_store_read(Goal) :-
         rebuild_if_due
     ).
 
-%   The reader counts itself in, then looks for a rebuild; the rebuild
-%   marks itself, then counts the readers (flag/3 is atomic): one of
-%   them sees the other.
+%   The reader counts itself in and looks for a rebuild; the rebuild
+%   marks itself, then counts the readers: one of them sees the other.
 
 enter_gate :-
-    flag(oro_store_readers, N, N+1),
-    flag(oro_store_rebuilding, R, R),
-    (   (   R == 0
+    gate_count(1, Rebuilding),
+    (   (   Rebuilding == 0
         ;   nb_current(oro_store_gate_exempt, true)
         )
     ->  nb_setval(oro_store_reader, true)
-    ;   flag(oro_store_readers, M, M-1),
+    ;   gate_count(-1, _),
         with_mutex(oro_store_rebuild, true),    % held by the rebuild
         enter_gate
     ).
 
 leave_gate :-
     nb_setval(oro_store_reader, false),
-    flag(oro_store_readers, N, N-1).
+    gate_count(-1, _).
+
+%   gate_count(+Delta, -Rebuilding): add Delta to the count of readers
+%   in the gate and read the rebuild's mark, under the mutex
+%   oro_store_gate, which the rebuild holds to set its mark
+%   (set_rebuilding/1): a reader and a rebuild are ordered by it.
+%   Called only by the setup and cleanup of oro_store_read/1, where
+%   signals wait, so the mutex is always unlocked.  (flag/3 would take
+%   three times as long: it meta-calls under a global mutex.)
+
+gate_count(Delta, Rebuilding) :-
+    mutex_lock(oro_store_gate),
+    get_flag(oro_store_readers, N0),
+    N is N0 + Delta,
+    set_flag(oro_store_readers, N),
+    get_flag(oro_store_rebuilding, Rebuilding),
+    mutex_unlock(oro_store_gate).
+
+set_rebuilding(Mark) :-
+    with_mutex(oro_store_gate, set_flag(oro_store_rebuilding, Mark)).
 
 rebuild_if_due :-
     (   flag(oro_store_rebuild_due, 1, 1),
@@ -870,15 +887,15 @@ oro_store_rebuild :-
     Deadline is Now + Wait,
     with_mutex(oro_store_rebuild,
                setup_call_cleanup(
-                   flag(oro_store_rebuilding, _, 1),
+                   set_rebuilding(1),
                    ( readers_gone(Deadline),
                      \+ rebuild_hook(blocked(Deadline)),
                      with_mutex(oro_write, rebuild_quiet(Deadline))
                    ),
-                   flag(oro_store_rebuilding, _, 0))).
+                   set_rebuilding(0))).
 
 readers_gone(Deadline) :-
-    flag(oro_store_readers, N, N),
+    get_flag(oro_store_readers, N),
     (   N =:= 0
     ->  true
     ;   get_time(Now),
