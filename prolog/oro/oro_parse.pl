@@ -67,10 +67,10 @@ all quoted with one quote, as liboro and pyoro send them
 label in it (one_quote_elements/2).  Other texts are tokenized from one
 tracked character to the next, found by split_string/4, the plain text
 between them split at once (scan_tokenize/3); the general, code-by-code
-path is left for texts with NUL.  All give the
-same results (test/test_parse.pl runs them over corpora of tricky and
-random inputs); a fast path only skips work that provably does nothing
-on the texts it takes.
+path is left for texts with NUL.  All give the same results
+(test/test_parse.pl runs them over corpora of tricky and random
+inputs); a fast path only skips work that provably does nothing on the
+texts it takes.
 */
 
                  /*******************************
