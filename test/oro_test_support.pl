@@ -10,6 +10,7 @@
             test_reclaimed/2,           % :Goal, -Reclaimed
             test_literal/3,             % +Type, +Lex, -Literal
             test_wait_until/2,          % :Condition, +Seconds
+            test_process_wait/3,        % +Pid, -Status, +Seconds
             test_server_start/1,        % +Options
             test_server_start_testsuite/0,
             test_server_start_testsuite/1, % +Options
@@ -236,6 +237,23 @@ wait_until(Condition, Deadline) :-
         wait_until(Condition, Deadline)
     ;   fail
     ).
+
+%!  test_process_wait(+Pid, -Status, +Seconds) is det.
+%
+%   Status is the exit status of the child process Pid, as of
+%   process_wait/2, once it has exited, or `timeout` if it still runs
+%   after Seconds.  (SWI-Prolog 9.0.4's process_wait/3 blocks until the
+%   child exits whatever its timeout(Seconds) option, but for 0.)
+
+test_process_wait(Pid, Status, Seconds) :-
+    (   test_wait_until(exited(Pid, Status0), Seconds)
+    ->  Status = Status0
+    ;   Status = timeout
+    ).
+
+exited(Pid, Status) :-
+    process_wait(Pid, Status, [timeout(0)]),
+    Status \== timeout.
 
 
                  /*******************************

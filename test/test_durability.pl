@@ -480,7 +480,7 @@ durability_server_args(Goals, Options, Args) :-
 
 durability_kill(Pid, Out) :-
     catch(process_kill(Pid, kill), _, true),
-    process_wait(Pid, _, [timeout(30)]),
+    test_process_wait(Pid, _, 30),
     close(Out).
 
 durability_kills(N) :-
@@ -920,7 +920,7 @@ durability_signal_exit(Signal, Status-Reply) :-
           oro_call(Conn, add, ["[k1 isOn t1]"], _),
           oro_disconnect(Conn),
           process_kill(Pid, Signal),
-          process_wait(Pid, Status, [timeout(30)]),
+          durability_exit_status(Pid, Signal, Status),
           close(Out),
           durability_server(Dir, Pid2, Port2, Out2),
           call_cleanup(( oro_connect(Port2, Conn2),
@@ -980,7 +980,7 @@ durability_hold_request(Pid, Port, Hold, Size, Reply, Refused, Status) :-
           test_bool(test_wait_until(durability_refused(Port), 30), Refused),
           setup_call_cleanup(open(Go, write, S), true, close(S)),
           oro_receive(Conn, Reply, 60),
-          process_wait(Pid, Status, [timeout(60)])
+          test_process_wait(Pid, Status, 60)
         ),
         oro_disconnect(Conn)).
 
@@ -1096,8 +1096,26 @@ durability_add_then_term(Pid, Port, Size, Reply, Status) :-
     call_cleanup(( oro_send(Conn, add, [Set]),
                    process_kill(Pid, term),
                    oro_receive(Conn, Reply, 60),
-                   process_wait(Pid, Status, [timeout(60)])
+                   durability_exit_status(Pid, term, Status)
                  ),
                  oro_disconnect(Conn)).
+
+%   durability_exit_status(+Pid, +Signal, -Status): the exit Status of
+%   the server Pid, which was sent Signal (`timeout` if it runs 40 s
+%   later).  SWI-Prolog 9.0.4 can lose a signal that the kernel gives to
+%   a thread being created, as a connection's thread is when the client
+%   sends the signal right after connecting (once in about 130 runs of
+%   sigterm_reply_agrees_with_store, in a scratch loop): a server still
+%   running after 20 s is sent Signal again, and the test says so.
+
+durability_exit_status(Pid, Signal, Status) :-
+    test_process_wait(Pid, Status0, 20),
+    (   Status0 == timeout
+    ->  format(user_error, "~n% The server did not act on ~w within 20 s: \c
+                            sent again~n", [Signal]),
+        process_kill(Pid, Signal),
+        test_process_wait(Pid, Status, 20)
+    ;   Status = Status0
+    ).
 
 :- end_tests(durability_sigterm).
