@@ -157,8 +157,9 @@ main :-
 %   that it listens only once every other thread has run a goal it sent
 %   it (threads_settled/0): after that, 0 in 90.  A connection's thread
 %   is created when the client connects, so a SIGTERM sent right after
-%   connecting can still be lost that way (about once in 130 runs of a
-%   scratch loop of test_durability's sigterm_reply_agrees_with_store):
+%   connecting can still be lost that way (9 times in 210 runs of
+%   test_durability's sigterm_reply_agrees_with_store, in scratch loops
+%   of this code and of older versions alike):
 %   a supervisor that sees the server still running should send it
 %   again, as that test does.
 

@@ -1104,8 +1104,8 @@ durability_add_then_term(Pid, Port, Size, Reply, Status) :-
 %   the server Pid, which was sent Signal (`timeout` if it runs 40 s
 %   later).  SWI-Prolog 9.0.4 can lose a signal that the kernel gives to
 %   a thread being created, as a connection's thread is when the client
-%   sends the signal right after connecting (once in about 130 runs of
-%   sigterm_reply_agrees_with_store, in a scratch loop): a server still
+%   sends the signal right after connecting (9 times in 210 runs of
+%   sigterm_reply_agrees_with_store, in scratch loops): a server still
 %   running after 20 s is sent Signal again, and the test says so.
 
 durability_exit_status(Pid, Signal, Status) :-
