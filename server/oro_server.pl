@@ -159,9 +159,8 @@ main :-
 %   is created when the client connects, so a SIGTERM sent right after
 %   connecting can still be lost that way (9 times in 210 runs of
 %   test_durability's sigterm_reply_agrees_with_store, in scratch loops
-%   of this code and of older versions alike):
-%   a supervisor that sees the server still running should send it
-%   again, as that test does.
+%   of this code and of older versions alike): a supervisor that sees
+%   the server still running should send it again, as that test does.
 
 shutdown_signal(_Signal) :-
     thread_send_message(main, oro_server_stop).
