@@ -2246,10 +2246,13 @@ ev_inc_apply(clear(Ps)) :-
 %   the watchers (one subscriber, called in the watcher thread, so that
 %   every firing of a change is logged once oro_events_sync/0 returns),
 %   make the changes, and log Step-WatcherIndex-Content for each
-%   firing.  How is `true` (incremental evaluation), `false` (full
-%   evaluation of the watchers the index selects) or `reference` (no
-%   index, setting oro_events:index false: every watcher, in full, at
-%   every change; with the watchers of ev_ref_watch/3 too).
+%   firing.  How is one of ev_inc_settings/4: `true` (incremental
+%   evaluation), `false` (full evaluation of the watchers the index
+%   selects), `reference` (no index, setting oro_events:index false:
+%   every watcher, in full, at every change; with the watchers of
+%   ev_ref_watch/3 too), `indexed` (those watchers, with the index),
+%   `filtered` and `unfiltered` (the class-anchored watchers, with and
+%   without the index).
 
 ev_inc_run(How, Ops, Log) :-
     ev_inc_store,
@@ -2270,29 +2273,31 @@ ev_inc_run(How, Ops, Log) :-
           message_queue_destroy(Q)
         )).
 
-ev_inc_mode(true, base) :-
-    set_setting(oro_events:index, true),
-    set_setting(oro_events:incremental, true).
-ev_inc_mode(false, base) :-
-    set_setting(oro_events:index, true),
-    set_setting(oro_events:incremental, false).
-ev_inc_mode(indexed, reference) :-             % the other reference watchers
-    set_setting(oro_events:index, true),
-    set_setting(oro_events:incremental, true).
-ev_inc_mode(reference, reference) :-
-    set_setting(oro_events:index, false),
-    set_setting(oro_events:incremental, true).
-ev_inc_mode(filtered, classes) :-
-    set_setting(oro_events:index, true),
-    set_setting(oro_events:incremental, true).
-ev_inc_mode(unfiltered, classes) :-
-    set_setting(oro_events:index, false),
-    set_setting(oro_events:incremental, true).
+%   ev_inc_mode(+How, -Set): set oro_events' settings for How; Set
+%   names the watchers registered (ev_inc_register/3).
+
+ev_inc_mode(How, Set) :-
+    ev_inc_settings(How, Set, Index, Incremental),
+    set_setting(oro_events:index, Index),
+    set_setting(oro_events:incremental, Incremental).
+
+%   ev_inc_settings(?How, ?Set, ?Index, ?Incremental): the watchers of
+%   Set evaluated with the settings index and incremental of oro_events
+%   (`indexed`: the reference set, with the index).
+
+ev_inc_settings(true,       base,      true,  true).
+ev_inc_settings(false,      base,      true,  false).
+ev_inc_settings(indexed,    reference, true,  true).
+ev_inc_settings(reference,  reference, false, true).
+ev_inc_settings(filtered,   classes,   true,  true).
+ev_inc_settings(unfiltered, classes,   false, true).
 
 %   ev_inc_after(+Set): after each change of the set `classes`, a query
 %   compiles the shared schema tables of the robot's model (as the
-%   server's queries do), which the writers' filter of type triples
-%   needs to be at work.
+%   server's queries do), so that the writers' filter of type triples
+%   is at work from the next change on: left to itself, the first write
+%   after a schema change is sent whole and warms the tables for the
+%   writes after it.
 
 ev_inc_after(classes) :-
     !,

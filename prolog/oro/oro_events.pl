@@ -1159,10 +1159,7 @@ handle(change(Snapshot, Touched, Schema, Delta)) :-
                  )),
     run_direct_deliveries.
 handle(warm(Model)) :-
-    (   oro_compiled_schema(Model, _)
-    ->  true
-    ;   oro_shared_schema(Model, _)
-    ).
+    oro_shared_schema(Model, _).        % compiled unless already done
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
     ->  Result = Result0

@@ -299,7 +299,8 @@ oro_store_write(Action, Goal) :-
 %   `oro_write` mutex.  (The goals given to with_mutex/2 and
 %   setup_call_cleanup/3 here and in store_write/2 are named
 %   predicates: a meta-called conjunction or if-then-else is compiled
-%   to a temporary clause on every call, about 1 µs a write.)
+%   to a temporary clause on every call; bench/RESULTS.md, "A request's
+%   fixed cost".)
 
 locked_write(Action, Goal) :-
     setup_call_cleanup(
@@ -795,8 +796,8 @@ leave_gate :-
 %   oro_store_gate, which the rebuild holds to set its mark
 %   (set_rebuilding/1): a reader and a rebuild are ordered by it.
 %   Called only by the setup and cleanup of oro_store_read/1, where
-%   signals wait, so the mutex is always unlocked.  (flag/3 would take
-%   three times as long: it meta-calls under a global mutex.)
+%   signals wait, so the mutex is always unlocked.  (Not flag/3, which
+%   meta-calls update_flag/3 under a global mutex on every update.)
 
 gate_count(Delta, Rebuilding) :-
     mutex_lock(oro_store_gate),
