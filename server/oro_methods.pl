@@ -752,10 +752,10 @@ agent_model(Agent, Model) :-
 %   The subscriber of a connection, made on first use: one for all its
 %   watchers (in every registry), so its events keep their commit
 %   order; they are written on the connection under the connection's
-%   mutex.  The connection is ended (its thread gets
-%   oro_connection_end(Why)) when the subscriber falls too far behind
-%   (more than the setting oro_server:event_queue events waiting to be
-%   written), or when an event cannot be written (the client left, or
+%   mutex.  The connection is ended (the context's `end` closure makes
+%   its thread throw oro_connection_end(Why)) when the subscriber falls
+%   too far behind (more than the setting oro_server:event_queue events
+%   waiting to be written), or when an event cannot be written (the client left, or
 %   did not read for write_timeout seconds): then the events still
 %   queued are dropped at once instead of each waiting for the same
 %   timeout.
@@ -765,7 +765,7 @@ connection_subscriber(Context, Subscriber) :-
     arg(1, Slot, Subscribers),
     (   Subscribers = [Subscriber0]
     ->  Subscriber = Subscriber0
-    ;   Sink = sink(Context.out, Context.mutex, Context.thread, open),
+    ;   Sink = sink(Context.out, Context.mutex, Context.end, open),
         setting(oro_server:event_queue, MaxQueue),
         oro_subscriber_create(deliver_event(Sink), Subscriber,
                               [ max_queue(MaxQueue),
@@ -788,8 +788,8 @@ deliver_event(Sink, Id, Content) :-
 
 end_connection(Sink, Why) :-
     nb_setarg(4, Sink, ended),
-    arg(3, Sink, Thread),
-    catch(thread_signal(Thread, throw(oro_connection_end(Why))), _, true).
+    arg(3, Sink, End),
+    call(End, Why).
 
 event_content([], void) :-
     !.

@@ -2,10 +2,10 @@
           [ oro_server_start/2,         % +Options, -Server
             oro_server_stop/1,          % +Server
             oro_server_shutdown/1,      % +Server
-            oro_server_port/2           % +Server, -Port
+            oro_server_port/2,          % +Server, -Port
+            oro_server_connections/2    % +Server, -Count
           ]).
 :- use_module(library(socket)).
-:- use_module(library(thread_pool)).
 :- use_module(library(main), [argv_options/3]).
 :- use_module(library(option)).
 :- use_module(library(error)).
@@ -26,9 +26,10 @@
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
                                [--db=DIR]
 
-An accept thread hands each connection to a worker of a bounded pool
-(`max_connections`); each worker reads requests with oro_protocol,
-runs them through oro_methods and writes the replies.  Requests from
+An accept thread hands each connection to a worker thread, at most
+`max_connections` at once; each worker reads requests with
+oro_protocol, runs them through oro_methods and writes the replies,
+then waits for the next connection.  Requests from
 different clients run concurrently (changes are serialised by the
 store); a slow or broken client only holds its own worker.  Every
 connection is closed and released by setup_call_cleanup/3, whatever
@@ -50,10 +51,13 @@ nothing.
 
 :- dynamic
     connection/1,                   % Mutex of a live connection
-    closed_connection/1.            % Mutex of one the shutdown closed
+    closed_connection/1,            % Mutex of one the shutdown closed
+    workers/3.                      % Jobs, Busy, Idle: see CONNECTION WORKERS
 
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
+:- setting(spare_workers, nonneg, 4,
+           'Connection threads made at start and kept waiting for a client').
 :- setting(max_request_size, positive_integer, 16777216,
            'Maximum size of one request, in bytes').
 :- setting(max_params, positive_integer, 4096,
@@ -155,12 +159,15 @@ main :-
 %   after it said it listens hit that window: on one core, 4 stops in
 %   60 were lost (a scratch loop; bench/RESULTS.md).  So main announces
 %   that it listens only once every other thread has run a goal it sent
-%   it (threads_settled/0): after that, 0 in 90.  A connection's thread
-%   is created when the client connects, so a SIGTERM sent right after
-%   connecting can still be lost that way (9 times in 210 runs of
-%   test_durability's sigterm_reply_agrees_with_store, in scratch loops
-%   of this code and of older versions alike): a supervisor that sees
-%   the server still running should send it again, as that test does.
+%   it (threads_settled/0): after that, 0 in 90.  A connection is
+%   served by a worker made at start (see CONNECTION WORKERS), not by a
+%   thread made when the client connects: a SIGTERM sent right after a
+%   client connected was lost 8 times in 200 runs of test_durability's
+%   sigterm_reply_agrees_with_store when it was, 0 in 200 since.  A
+%   thread is still made for a client while spare_workers others are
+%   connected, and for an event subscriber's delivery: a SIGTERM that
+%   comes just then can still be lost, so a supervisor that sees the
+%   server still running should send it again, as the tests do.
 
 shutdown_signal(_Signal) :-
     thread_send_message(main, oro_server_stop).
@@ -228,13 +235,12 @@ oro_server_start(Options, Server) :-
         tcp_bind(Socket, Host:Port)
     ),
     tcp_listen(Socket, 64),
-    setting(max_connections, Max),
-    gensym(oro_pool_, Pool),
-    thread_pool_create(Pool, Max, [backlog(0)]),
     get_time(Started),
     message_queue_create(Control),
-    Server = oro_server{socket:Socket, host:Host, port:Port, pool:Pool,
+    message_queue_create(Jobs),
+    Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
                         started:Started, accept:Accept, control:Control},
+    start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
 
@@ -245,10 +251,22 @@ oro_server_start(Options, Server) :-
 oro_server_port(Server, Port) :-
     Port = Server.port.
 
+%!  oro_server_connections(+Server, -Count) is det.
+%
+%   Count is the number of connections Server is serving now.
+
+oro_server_connections(Server, Count) :-
+    must_be(dict, Server),
+    (   workers(Server.jobs, Busy, _)
+    ->  Count = Busy
+    ;   Count = 0                           % stopped, and none left
+    ).
+
 %!  oro_server_stop(+Server) is det.
 %
 %   Stop accepting connections and release the listening socket.
-%   Connections in progress finish their current request.
+%   Connections in progress finish their current request; the workers
+%   waiting for a connection end.
 %
 %   The accept thread is told through the server's control queue and
 %   woken by a connection of our own: no asynchronous signal, which
@@ -260,7 +278,7 @@ oro_server_stop(Server) :-
     thread_join(Server.accept, _),
     catch(tcp_close_socket(Server.socket), _, true),
     message_queue_destroy(Server.control),
-    catch(thread_pool_destroy(Server.pool), _, true).
+    stop_workers(Server).
 
 %!  oro_server_shutdown(+Server) is det.
 %
@@ -330,20 +348,15 @@ accept_connections(Server) :-
         fail
     ).
 
-start_connection(Server, Client, Peer) :-
-    catch(thread_create_in_pool(Server.pool,
-                                serve_connection(Server, Client, Peer),
-                                _, [detached(true), wait(false)]),
-          Error,
-          refuse_connection(Client, Peer, Error)).
+%   refuse_connection(+Client, +Peer, +Why): tell the client why it
+%   is not served (all workers busy, or no thread for it), and close it.
 
-refuse_connection(Client, Peer, Error) :-
-    (   Error = error(resource_error(threads_in_pool(_)), _)
-    ->  setting(max_connections, Max),
-        print_message(warning,
+refuse_connection(Client, Peer, Why) :-
+    (   Why = full(Max)
+    ->  print_message(warning,
                       format("oro: connection from ~p refused: ~D connections \c
                               open already (max_connections)", [Peer, Max]))
-    ;   print_message(warning, Error)
+    ;   print_message(warning, Why)
     ),
     catch(setup_call_cleanup(
               tcp_open_socket(Client, Pair),
@@ -356,11 +369,190 @@ refuse_connection(Client, Peer, Error) :-
               close(Pair, [force(true)])),
           error(_, _), true).
 
-serve_connection(Server, Client, Peer) :-
-    tcp_setopt(Client, nodelay),            % events right after replies
+                 /*******************************
+                 *      CONNECTION WORKERS      *
+                 *******************************/
+
+%   A connection is served by a worker thread, which then waits on the
+%   server's job queue for the next one.  `spare_workers` of them are
+%   made at start, before the server says it listens, and as many are
+%   kept waiting when connections end; more are made when every one is
+%   busy, up to `max_connections` in all.  So a client that connects
+%   usually finds a thread ready: connecting does not pay for making
+%   one, and no thread is being made when the server is sent SIGTERM
+%   (SWI-Prolog 9.0.4 drops a signal the kernel hands to a thread
+%   being made: see shutdown_signal/1).
+%
+%   workers(Jobs, Busy, Idle), under the mutex oro_server_workers: the
+%   number of connections being served and of workers waiting on the
+%   queue Jobs.  Only the accept thread hands out connections, so a
+%   connection it counts as given to a waiting worker always finds one.
+
+start_workers(Server) :-
+    setting(max_connections, Max),
+    setting(spare_workers, Spare0),
+    Spare is min(Spare0, Max),
+    Jobs = Server.jobs,
+    with_mutex(oro_server_workers, assertz(workers(Jobs, 0, Spare))),
+    forall(between(1, Spare, _),
+           thread_create(connection_worker(Server, 1), _, [detached(true)])).
+
+%   start_connection(+Server, +Client, +Peer): give the connection to
+%   a waiting worker, or to a new one, or refuse it.
+
+start_connection(Server, Client, Peer) :-
+    setting(max_connections, Max),
+    Jobs = Server.jobs,
+    with_mutex(oro_server_workers, reserve_worker(Jobs, Max, How)),
+    (   How == waiting
+    ->  thread_send_message(Jobs, serve(Client, Peer))
+    ;   How == new
+    ->  catch(thread_create(connection_worker(Server, 1, Client, Peer), _,
+                            [detached(true)]),
+              Error,
+              ( with_mutex(oro_server_workers, release_worker(Jobs, _)),
+                refuse_connection(Client, Peer, Error)
+              ))
+    ;   refuse_connection(Client, Peer, full(Max))
+    ).
+
+%   reserve_worker(+Jobs, +Max, -How): count one more connection, for a
+%   worker that waits (How = waiting) or a new one (new), unless Max
+%   are served already (full).
+
+reserve_worker(Jobs, Max, How) :-
+    workers(Jobs, Busy, Idle),
+    (   ( Busy >= Max ; Idle == stopped )
+    ->  How = full
+    ;   Busy1 is Busy + 1,
+        (   Idle > 0
+        ->  How = waiting,
+            Idle1 is Idle - 1
+        ;   How = new,
+            Idle1 = Idle
+        ),
+        retract(workers(Jobs, Busy, Idle)),
+        assertz(workers(Jobs, Busy1, Idle1))
+    ).
+
+%   release_worker(+Jobs, -Wait): count one connection less; Wait is
+%   true if its worker is to wait for another one (fewer than
+%   spare_workers wait), false if it is to end, as it is once the server
+%   has stopped (Idle is then `stopped`, and the count is dropped with
+%   the last connection).
+
+release_worker(Jobs, Wait) :-
+    retract(workers(Jobs, Busy, Idle)),
+    Busy1 is Busy - 1,
+    setting(spare_workers, Spare),
+    (   Idle == stopped
+    ->  Wait = false,
+        (   Busy1 =:= 0
+        ->  true
+        ;   assertz(workers(Jobs, Busy1, stopped))
+        )
+    ;   Idle < Spare
+    ->  Wait = true,
+        Idle1 is Idle + 1,
+        assertz(workers(Jobs, Busy1, Idle1))
+    ;   Wait = false,
+        assertz(workers(Jobs, Busy1, Idle))
+    ).
+
+%   connection_worker(+Server, +Serial[, +Client, +Peer]): serve
+%   connections until the server stops or enough workers wait.  Serial
+%   numbers the connections the thread serves, so that a signal meant
+%   to end one of them does not end a later one (see end_connection/3).
+%   The queue is destroyed when the server stops: a worker waiting on
+%   it, or coming back to it, ends.
+
+connection_worker(Server, Serial) :-
+    (   catch(thread_get_message(Server.jobs, serve(Client, Peer)),
+              error(existence_error(message_queue, _), _),
+              fail)
+    ->  connection_worker(Server, Serial, Client, Peer)
+    ;   true
+    ).
+
+connection_worker(Server, Serial, Client, Peer) :-
+    catch(serve_job(Server, Serial, Client, Peer),
+          oro_connection_end(_),            % a signal that came just after
+          true),
+    with_mutex(oro_server_workers, release_worker(Server.jobs, Wait)),
+    (   Wait == true
+    ->  Next is Serial + 1,
+        connection_worker(Server, Next)
+    ;   true
+    ).
+
+serve_job(Server, Serial, Client, Peer) :-
+    nb_setval(oro_server_serving, Serial),
+    catch(serve_connection(Server, Serial, Client, Peer), Error,
+          connection_failed(Error)),
+    nb_setval(oro_server_serving, none),
+    release_stacks.
+
+%   release_stacks: a worker whose stacks grew past 4 MB (a large
+%   request) gives them back before it waits.  Trimming small ones
+%   would slow every connection for nothing (bench/RESULTS.md).
+
+release_stacks :-
+    statistics(global, Global),
+    statistics(local, Local),
+    statistics(trail, Trail),
+    (   Global + Local + Trail > 4 194 304
+    ->  garbage_collect,
+        trim_stacks
+    ;   true
+    ).
+
+connection_failed(Error) :-
+    (   Error = oro_connection_end(_)
+    ->  true
+    ;   print_message(warning, Error)
+    ).
+
+%   end_connection(+Thread, +Serial, +Why): end the connection Serial
+%   of the worker Thread, if it is still serving it (oro_methods calls
+%   this through the connection's context, from the thread delivering
+%   its events).  The signal throws once: a later one finds the worker
+%   no longer serving Serial, even while it is still ending it.
+
+end_connection(Thread, Serial, Why) :-
+    catch(thread_signal(Thread, end_serving(Serial, Why)), _, true).
+
+end_serving(Serial, Why) :-
+    (   nb_current(oro_server_serving, Serial)
+    ->  nb_setval(oro_server_serving, none),
+        throw(oro_connection_end(Why))
+    ;   true
+    ).
+
+%   stop_workers(+Server): the waiting workers end; connections already
+%   given to a worker but not taken yet are closed.
+
+stop_workers(Server) :-
+    Jobs = Server.jobs,
+    with_mutex(oro_server_workers, workers_stopped(Jobs)),
+    forall(thread_get_message(Jobs, serve(Client, _), [timeout(0)]),
+           ( catch(tcp_close_socket(Client), _, true),
+             with_mutex(oro_server_workers, release_worker(Jobs, _))
+           )),
+    message_queue_destroy(Jobs).
+
+workers_stopped(Jobs) :-
+    retract(workers(Jobs, Busy, _)),
+    (   Busy =:= 0
+    ->  true
+    ;   assertz(workers(Jobs, Busy, stopped))
+    ).
+
+serve_connection(Server, Serial, Client, Peer) :-
     setup_call_cleanup(
         tcp_open_socket(Client, Pair),
-        serve_stream(Server, Pair, Peer),
+        ( tcp_setopt(Client, nodelay),      % events right after replies
+          serve_stream(Server, Serial, Pair, Peer)
+        ),
         close(Pair, [force(true)])).
 
 %   The connection's context: its streams, the mutex every write to it
@@ -369,7 +561,7 @@ serve_connection(Server, Client, Peer) :-
 %   event subscribers (oro_methods creates them on first registration;
 %   they are destroyed with the connection).
 
-serve_stream(Server, Pair, Peer) :-
+serve_stream(Server, Serial, Pair, Peer) :-
     stream_pair(Pair, In, Out),
     set_stream(Out, encoding(utf8)),
     set_stream(Out, newline(posix)),
@@ -384,12 +576,14 @@ serve_stream(Server, Pair, Peer) :-
     setting(max_request_size, Limit),
     setting(max_params, MaxParams),
     thread_self(Me),
+    End = oro_server:end_connection(Me, Serial),
     setup_call_cleanup(
         ( mutex_create(Mutex),
           with_mutex(oro_connections, assertz(connection(Mutex)))
         ),
         ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
-                      mutex:Mutex, thread:Me, subscribers:slot([]),
+                      mutex:Mutex, end:End,
+                      subscribers:slot([]),
                       max_params:MaxParams},
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
                   serve_requests(Context, Reader, Out)

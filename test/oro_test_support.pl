@@ -19,6 +19,7 @@
             test_server_stop_synced/0,
             test_server_wait_idle/0,
             test_server_port/1,         % -Port
+            test_server_connections/1,  % -Count
             test_connected/2,           % -Conn, :Goal
             test_call/3,                % +Method, +Params, ?Reply
             test_calls/2,               % +Requests, ?Replies
@@ -46,7 +47,6 @@
 :- use_module(library(error)).
 :- use_module(library(readutil)).
 :- use_module(library(process)).
-:- use_module(library(thread_pool)).
 :- use_module(library(http/json)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(settings)).
@@ -330,21 +330,16 @@ test_server_stop_synced :-
 %!  test_server_wait_idle is det.
 %
 %   Wait (10 s at most) until the workers of the unit's server, if
-%   any, have seen their clients leave.  Peeks at the server's pool
-%   through its handle.
+%   any, have seen their clients leave.
 
 test_server_wait_idle :-
     forall(test_server(Server), wait_idle(Server)).
 
 wait_idle(Server) :-
-    (   is_dict(Server),
-        get_dict(pool, Server, Pool)
-    ->  ignore(test_wait_until(pool_idle(Pool), 10))
+    (   is_dict(Server)
+    ->  ignore(test_wait_until(oro_server_connections(Server, 0), 10))
     ;   true
     ).
-
-pool_idle(Pool) :-
-    catch(thread_pool_property(Pool, running(0)), _, true).
 
 %!  test_server_port(-Port) is semidet.
 %
@@ -354,6 +349,16 @@ test_server_port(Port) :-
     test_server(Server),
     !,
     oro_server_port(Server, Port).
+
+%!  test_server_connections(-Count) is semidet.
+%
+%   Count is the number of connections the unit's server is serving
+%   (oro_server_connections/2); fails if none runs.
+
+test_server_connections(Count) :-
+    test_server(Server),
+    !,
+    oro_server_connections(Server, Count).
 
 
                  /*******************************

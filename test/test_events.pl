@@ -1168,8 +1168,9 @@ test(overflow_disconnects_a_client_that_never_reads,
                                   ->  Dropped = dropped
                                   ;   Dropped = still_there
                                   ),
-                                  % Its connection and delivery threads end
-                                  % with nothing read from it ...
+                                  % Its event delivery thread ends with
+                                  % nothing read from it (its connection's
+                                  % worker was waiting before it came) ...
                                   (   Threads \== [],
                                       test_wait_until(ev_threads_ended(Threads), 10)
                                   ->  Ended = ended
@@ -1198,7 +1199,7 @@ ev_reply_kind(Reply, Reply).
 %   fill the socket's buffers (11 rounds in a trial); then its
 %   subscriber's queue fills, past oro_server:event_queue (lowered to 4)
 %   it overflows, and the client must be disconnected at once: its
-%   server threads must end within 10 s with nothing read from it, while
+%   delivery thread must end within 10 s with nothing read from it, while
 %   write_timeout is 60 s.  The other client makes the changes until the
 %   watcher is dropped (at most ev_big_rounds/1 rounds, each an add and
 %   a remove of a batch: 80 MB of events), then must still be served and

@@ -2,6 +2,7 @@
 :- use_module(oro_test_support).
 :- use_module(oro_test_client).
 :- use_module(library(oro)).
+:- use_module('../server/oro_server').
 
 /*  Resource exhaustion and limits (issue #8), over real sockets on
     127.0.0.1 against the in-process server:
@@ -87,6 +88,13 @@ exh_member(List, X) :-
 
 exh_no_new_threads(Before) :-
     exh_new_threads(Before, []).
+
+%   exh_dropped(+Before): the server serves no connection, and the
+%   threads it made since Before (event delivery) have ended.
+
+exh_dropped(Before) :-
+    test_server_connections(0),
+    exh_no_new_threads(Before).
 
 
                  /*******************************
@@ -265,9 +273,9 @@ exh_names_kept(Conn, Names, Outcome) :-
 %   another client adds or removes, then neither reads nor sends.  The
 %   events (8 MB in all, ten times what the socket buffers took in a
 %   trial) must not hold the server: the other client is served all
-%   along, and the silent one is disconnected (its connection thread
-%   and its event delivery thread end) within 10 s, ten times the
-%   write timeout (lowered to 1 s).
+%   along, and the silent one is disconnected (the server serves no
+%   connection any more, and the event delivery thread it made has
+%   ended) within 10 s, ten times the write timeout (lowered to 1 s).
 
 exh_event_names(200).                   % instances per batch
 exh_event_batches(100).                 % each added then removed
@@ -326,7 +334,7 @@ test(events_to_a_client_that_never_reads,
                 exh_connect(Other),
                 call_cleanup(exh_event_load(Other, Served),
                              oro_disconnect(Other)),
-                (   test_wait_until(exh_no_new_threads(Before), 10)
+                (   test_wait_until(exh_dropped(Before), 10)
                 ->  Dropped = dropped
                 ;   exh_new_threads(Before, Left),
                     length(Left, N),
@@ -460,6 +468,139 @@ exh_idle_closed(Conn, Kind) :-
     ).
 
 :- end_tests(exhaustion_connections).
+
+%   Connection workers: `spare_workers` (lowered to 2) threads wait for
+%   clients from the start, so connecting makes no thread; connections
+%   beyond them get threads of their own, which end with them, while
+%   the spare ones are kept.
+
+exh_start_workers :-
+    set_setting(oro_server:spare_workers, 2),
+    exh_start_limited.
+
+exh_stop_workers :-
+    exh_stop_limited,
+    restore_setting(oro_server:spare_workers).
+
+exh_thread_count(N) :-
+    aggregate_all(count, thread_property(_, status(running)), N).
+
+exh_served_on(Conn) :-
+    oro_call(Conn, check, ["[baboon rdf:type Animal]"], ok("true"), 10).
+
+:- begin_tests(exhaustion_workers,
+               [ setup(exh_start_workers),
+                 cleanup(exh_stop_workers)
+               ]).
+
+test(connecting_makes_no_thread, [true(During == Before)]) :-
+    once(exh_served_now),               % the server's threads are all up
+    once(test_wait_until(test_server_connections(0), 10)),
+    exh_threads(Before),
+    exh_connect(Conn),
+    call_cleanup(( exh_served_on(Conn),
+                   exh_threads(During)
+                 ),
+                 oro_disconnect(Conn)).
+
+test(spare_workers_kept, [true(Got == [5, 5, 3, true, true])]) :-
+    once(test_wait_until(test_server_connections(0), 10)),
+    exh_thread_count(Before),
+    exh_open(5, Conns),
+    call_cleanup(( include(exh_served_on, Conns, Served),
+                   length(Served, NServed),
+                   test_server_connections(Busy),
+                   exh_thread_count(During),
+                   NNew is During - Before
+                 ),
+                 exh_close_all(Conns)),
+    % the spare workers that wait again need not be the first ones
+    test_bool(test_wait_until(exh_thread_count(Before), 10), Back),
+    test_bool(exh_served_now, Again),
+    Got = [NServed, Busy, NNew, Back, Again].
+
+test(a_late_signal_ends_nothing, [true(Got == [none, ended(x), none])]) :-
+    setup_call_cleanup(
+        nb_setval(oro_server_serving, 2),
+        ( catch(oro_server:end_serving(1, x), E1, true),
+          catch(oro_server:end_serving(2, x), E2, true),
+          catch(oro_server:end_serving(2, x), E3, true)
+        ),
+        nb_setval(oro_server_serving, none)),
+    maplist(exh_thrown, [E1, E2, E3], Got).
+
+%   A worker that served a large request gives its stacks back before
+%   it waits again (release_stacks/0 in the server).
+
+test(large_request_stacks_released, [true(Got == [ok, true])]) :-
+    once(test_wait_until(test_server_connections(0), 10)),
+    exh_large_set(20000, Set),
+    exh_connect(Conn),
+    call_cleanup(oro_call(Conn, add, [Set], Reply, 60),
+                 oro_disconnect(Conn)),
+    exh_reply_kind(Reply, Kind),
+    test_bool(test_wait_until(exh_small_stacks, 10), Small),
+    Got = [Kind, Small].
+
+exh_large_set(N, Set) :-
+    numlist(1, N, Is),
+    maplist(exh_large_statement, Is, Statements),
+    atomic_list_concat(Statements, ', ', Body),
+    format(string(Set), "[~w]", [Body]).
+
+exh_large_statement(I, S) :-
+    format(string(S), "exl~d exlp exlo~d", [I, I]).
+
+%   exh_small_stacks: no thread without an alias (the workers among
+%   them) holds more than 4 MB of stacks, and none serves a client.
+
+exh_small_stacks :-
+    test_server_connections(0),
+    exh_threads(Threads),
+    forall(member(T, Threads),
+           ( thread_statistics(T, global, G),
+             thread_statistics(T, local, L),
+             thread_statistics(T, trail, Tr),
+             G + L + Tr =< 4 194 304
+           )).
+
+%   A stopped server still serves the connections it had; their workers
+%   end with them, and its waiting workers at once.  (A server of its
+%   own: starting it initialises the store again.)
+
+test(stop_lets_connections_finish,
+     [true(Got == [ok, 1, ok, true, true])]) :-
+    oro_server_start([port(0), host('127.0.0.1')], Server),
+    oro_server_port(Server, Port),
+    exh_thread_count(Started),          % with its accept thread, 2 workers
+    Before is Started - 3,
+    oro_connect(Port, Conn, [nodelay(true)]),
+    call_cleanup(( oro_call(Conn, check, ["[baboon rdf:type Animal]"], Reply0, 10),
+                   oro_server_stop(Server),
+                   oro_server_connections(Server, Open),
+                   oro_call(Conn, check, ["[baboon rdf:type Animal]"], Reply1, 10)
+                 ),
+                 oro_disconnect(Conn)),
+    test_bool(test_wait_until(oro_server_connections(Server, 0), 10), None),
+    test_bool(test_wait_until(exh_thread_count(Before), 10), Back),
+    maplist(exh_reply_kind, [Reply0, Reply1], [Kind0, Kind1]),
+    Got = [Kind0, Open, Kind1, None, Back].
+
+exh_reply_kind(Reply, Kind) :-
+    (   Reply = ok(_)
+    ->  Kind = ok
+    ;   Kind = Reply
+    ).
+
+exh_thrown(E, Kind) :-
+    (   var(E)
+    ->  Kind = none
+    ;   E = oro_connection_end(Why)
+    ->  Kind = ended(Why)
+    ;   Kind = E
+    ).
+
+:- end_tests(exhaustion_workers).
 
 
                  /*******************************
