@@ -410,7 +410,7 @@ start_connection(Server, Client, Peer) :-
     ->  catch(thread_create(connection_worker(Server, 1, Client, Peer), _,
                             [detached(true)]),
               Error,
-              ( with_mutex(oro_server_workers, release_worker(Jobs, _)),
+              ( with_mutex(oro_server_workers, unreserve_worker(Jobs)),
                 refuse_connection(Client, Peer, Error)
               ))
     ;   refuse_connection(Client, Peer, full(Max))
@@ -434,6 +434,14 @@ reserve_worker(Jobs, Max, How) :-
         retract(workers(Jobs, Busy, Idle)),
         assertz(workers(Jobs, Busy1, Idle1))
     ).
+
+%   unreserve_worker(+Jobs): count one connection less, for which no
+%   worker could be made.
+
+unreserve_worker(Jobs) :-
+    retract(workers(Jobs, Busy, Idle)),
+    Busy1 is Busy - 1,
+    assertz(workers(Jobs, Busy1, Idle)).
 
 %   release_worker(+Jobs, -Wait): count one connection less; Wait is
 %   true if its worker is to wait for another one (fewer than

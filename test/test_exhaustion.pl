@@ -529,6 +529,43 @@ test(a_late_signal_ends_nothing, [true(Got == [none, ended(x), none])]) :-
         nb_setval(oro_server_serving, none)),
     maplist(exh_thrown, [E1, E2, E3], Got).
 
+%   The count of connections and waiting workers (white box: the
+%   predicates the accept thread and the workers call under the mutex
+%   oro_server_workers), on a key no server uses; spare_workers is 2.
+
+test(worker_counts,
+     [ true(Got == [ waiting-(1-0), new-(2-0), full-(2-0), (1-0),
+                     true-(0-1), [waiting, full-(1-stopped), none] ])
+     ]) :-
+    Jobs = exh_no_server,
+    setup_call_cleanup(
+        assertz(oro_server:workers(Jobs, 0, 1)),
+        ( exh_counts(reserve_worker(Jobs, 2), Got1),
+          exh_counts(reserve_worker(Jobs, 2), Got2),
+          exh_counts(reserve_worker(Jobs, 2), Got3),
+          oro_server:unreserve_worker(Jobs),
+          exh_counts(Got4),
+          oro_server:release_worker(Jobs, Wait),
+          exh_counts(Counts5),
+          oro_server:reserve_worker(Jobs, 2, How6),       % a connection
+          oro_server:workers_stopped(Jobs),
+          exh_counts(reserve_worker(Jobs, 2), Got6),      % none after
+          oro_server:release_worker(Jobs, _),             % it ends
+          (   oro_server:workers(Jobs, _, _)
+          ->  Left = left
+          ;   Left = none
+          )
+        ),
+        retractall(oro_server:workers(Jobs, _, _))),
+    Got = [Got1, Got2, Got3, Got4, Wait-Counts5, [How6, Got6, Left]].
+
+exh_counts(Goal, How-Counts) :-
+    call(oro_server:Goal, How),
+    exh_counts(Counts).
+
+exh_counts(Busy-Idle) :-
+    oro_server:workers(exh_no_server, Busy, Idle).
+
 %   A worker that served a large request gives its stacks back before
 %   it waits again (release_stacks/0 in the server).
 
