@@ -94,7 +94,7 @@ log do the same.
 
 Every clause retracted is work for SWI-Prolog's clause garbage
 collector.  Once a program has erased clauses it held references to
-(set_setting/2 and thread_pool_create/3 do, and the server calls both),
+(set_setting/2 does, and the server calls it),
 SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
 run of that collector.  With three or four clauses retracted a write,
 a server adding one statement at a time ran both collectors every 12
