@@ -744,6 +744,35 @@ test(random_plain_statements_hit_fast_paths, true(Enough == true)) :-
     ->  Enough = true
     ;   Enough = Local-Plain
     ).
+test(random_literal_statements, Bad == []) :-
+    literal_corpus(3000, Texts),
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
+test(random_literal_statements_hit_fast_path, true(Fast >= 300)) :-
+    literal_corpus(3000, Texts),
+    aggregate_all(count,
+                  ( member(Text, Texts),
+                    catch(oro_parse:literal_statement(Text, _), error(_, _), true)
+                  ),
+                  Fast).
+test(literal_fast_path_taken, true) :-
+    oro_parse:literal_statement("furniture20 rdfs:label \"table 20\"", _),
+    oro_parse:literal_statement("?x rdfs:label \"it's 2 m^2 @home\"", _),
+    oro_parse:literal_statement("a p \"\"", _),
+    \+ oro_parse:literal_statement("a p \"x\"@en", _),
+    \+ oro_parse:literal_statement("a p \"x\"^^xsd:string", _),
+    \+ oro_parse:literal_statement("a p \"say \\\"hi\\\"\"", _),
+    \+ oro_parse:literal_statement("a p \"a [b]\"", _),
+    \+ oro_parse:literal_statement("a p \"a\tb\"", _),
+    \+ oro_parse:literal_statement("a  p \"x\"", _),
+    \+ oro_parse:literal_statement("a p  \"x\"", _),
+    \+ oro_parse:literal_statement(" a p \"x\"", _),
+    \+ oro_parse:literal_statement("a p \"x\" ", _).
 test(variables_shared_the_same, true(Ts == [rdf(X, P, O), rdf(X, P, O)])) :-
     oro_statements(["?x p ?o", "?x p ?o"], Ts, [x=X, o=O]),
     oro_parse:parse_statement("a p b", rdf(_, P, _)).
@@ -849,6 +878,25 @@ test(nul_splits_or_is_checked, true) :-
 
 local(Text) :-
     catch(oro_parse:local_statement(Text, _), error(_, _), true).
+
+%   literal_corpus(+N, -Texts): N random statements shaped as `S P
+%   "literal"`, now and then with what the literal fast path must
+%   refuse or leave to the general path: a quote, backslash, bracket,
+%   tab or NUL inside, a suffix (`@en`, `^^type`), two spaces, a space
+%   around, a variable, a prefix, an IRI in brackets.
+
+literal_corpus(N, Texts) :-
+    seeded_corpus(4321, N, literal_text, Texts).
+
+literal_text(Text) :-
+    random_member(S, ["s", "?s", "?", "obj1", "rdf:type", "<http://x/a>", "1a", "a'b"]),
+    random_member(P, ["p", "rdfs:label", "?p", "a", "x:"]),
+    random_member(Sep, [" ", " ", " ", " ", "  ", "\t"]),
+    random_member(Alphabet, ["ab 1'^@:\u00e9", "ab 1'\"\\[]{}^@:\t\u0000\u00e9"]),
+    random_text(Alphabet, 8, Inner),
+    random_member(Suffix, ["", "", "", "", "@en", "^^xsd:int", " ", "x"]),
+    random_member(Pre, ["", "", "", "", "", " "]),
+    atomics_to_string([Pre, S, " ", P, Sep, "\"", Inner, "\"", Suffix], Text).
 
 %   quoted_corpus(+N, -Texts): N random collections shaped as the
 %   clients send them -- elements all or mostly quoted with one quote,

@@ -803,6 +803,11 @@ is_var_term(Term) :-
 %     - plain_statement_tokens/4: a plain text of three non-empty tokens
 %       separated by single spaces, with no space around: the text is
 %       the statement already trimmed and tokenized.
+%     - literal_statement/2: two such tokens, then a literal in
+%       double quotes that ends the text (`obj1 rdfs:label "table 2"`),
+%       with no quote, backslash, bracket, brace or control character
+%       inside: the tokenizer would not split it, and it needs no
+%       unescaping.
 %
 %   Anything else (two spaces, a tab, quotes...) goes through
 %   general_statement/2, which also raises the errors.
@@ -812,6 +817,8 @@ parse_statement(Text, Triple) :-
     ->  Triple = Triple0
     ;   plain_statement_tokens(Text, ST, PT, OT)
     ->  tokens_triple(ST, PT, OT, Text, Triple)
+    ;   literal_statement(Text, Triple0)
+    ->  Triple = Triple0
     ;   general_statement(Text, Triple)
     ).
 
@@ -832,6 +839,19 @@ plain_statement_tokens(Text, ST, PT, OT) :-
     ST \== "",
     PT \== "",
     OT \== "".
+
+literal_statement(Text, rdf(S, P, literal(type(Type, Lex)))) :-
+    split_string(Text, "\"", "", [Head, Inner, ""]),
+    split_string(Head, " ", "", [ST, PT, ""]),
+    ST \== "",
+    PT \== "",
+    plain_text(Head),
+    quote_specials(Specials),
+    one_part(Inner, Specials),
+    resource_token(ST, Text, S),
+    resource_token(PT, Text, P),
+    atom_string(Lex, Inner),
+    rdf_equal(Type, xsd:string).
 
 %!  general_statement(+Text, -Triple) is det.
 %
