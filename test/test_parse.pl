@@ -692,13 +692,8 @@ statement_alphabet("ab1 ?:#<>^@\"'\\[]{},.\t-e\u00e9").
 :- begin_tests(parse_fast_paths).
 
 test(statement_corpus, Bad == []) :-
-    findall(Text-Fast-General,
-            ( statement_corpus(Text),
-              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
-              outcome(oro_parse:general_statement(Text, T2), T2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    findall(Text, statement_corpus(Text), Texts),
+    statement_disagreements(Texts, Bad).
 test(statement_corpus_size, true(N > 3000)) :-
     aggregate_all(count, statement_corpus(_), N).
 test(statement_fast_path_taken, true) :-
@@ -710,22 +705,10 @@ test(statement_fast_path_taken, true) :-
 test(random_statements, Bad == []) :-
     statement_alphabet(Alphabet),
     random_corpus(Alphabet, 14, 3000, Texts),
-    findall(Text-Fast-General,
-            ( member(Text, Texts),
-              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
-              outcome(oro_parse:general_statement(Text, T2), T2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    statement_disagreements(Texts, Bad).
 test(random_plain_statements, Bad == []) :-
     random_corpus("aab b1 ?:#@^\u00e9.", 12, 3000, Texts),
-    findall(Text-Fast-General,
-            ( member(Text, Texts),
-              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
-              outcome(oro_parse:general_statement(Text, T2), T2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    statement_disagreements(Texts, Bad).
 test(random_plain_statements_hit_fast_paths, true(Enough == true)) :-
     random_corpus("aab b1 ?:#@^\u00e9.", 12, 3000, Texts),
     aggregate_all(count,
@@ -746,13 +729,7 @@ test(random_plain_statements_hit_fast_paths, true(Enough == true)) :-
     ).
 test(random_literal_statements, Bad == []) :-
     literal_corpus(3000, Texts),
-    findall(Text-Fast-General,
-            ( member(Text, Texts),
-              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
-              outcome(oro_parse:general_statement(Text, T2), T2, General),
-              Fast \=@= General
-            ),
-            Bad).
+    statement_disagreements(Texts, Bad).
 test(random_literal_statements_hit_fast_path, true(Fast >= 300)) :-
     literal_corpus(3000, Texts),
     aggregate_all(count,
@@ -969,9 +946,20 @@ quoted_fast(Text) :-
     oro_parse:framed(Text, 0'[, 0'], Inner),
     oro_parse:quoted_elements(Inner, _).
 
-%   collection_disagreements(+Texts, -Bad): Bad are Text-Fast-General
-%   for each of Texts that oro_parse_collection/3 (list) and
-%   general_collection/2 decode differently (outcome/3 of each).
+%   statement_disagreements(+Texts, -Bad): Bad are Text-Fast-General
+%   for each of Texts that parse_statement/2 (with its fast paths) and
+%   general_statement/2 parse differently (outcome/3 of each).
+%   collection_disagreements(+Texts, -Bad): the same for
+%   oro_parse_collection/3 (list) and general_collection/2.
+
+statement_disagreements(Texts, Bad) :-
+    findall(Text-Fast-General,
+            ( member(Text, Texts),
+              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              Fast \=@= General
+            ),
+            Bad).
 
 collection_disagreements(Texts, Bad) :-
     findall(Text-Fast-General,
