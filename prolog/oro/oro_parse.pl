@@ -791,7 +791,7 @@ oro_is_partial(Triple) :-
 is_var_term(Term) :-
     subsumes_term(var(_), Term).
 
-%   parse_statement(+Text, -Triple).  Two fast paths before the
+%   parse_statement(+Text, -Triple).  Three fast paths before the
 %   general one:
 %
 %     - local_statement/2: a plain text (see plain_text/1) without any
@@ -840,7 +840,8 @@ plain_statement_tokens(Text, ST, PT, OT) :-
     PT \== "",
     OT \== "".
 
-literal_statement(Text, rdf(S, P, literal(type(Type, Lex)))) :-
+literal_statement(Text, rdf(S, P, O)) :-
+    sub_string(Text, _, 1, 0, "\""),       % not a typed or tagged one
     split_string(Text, "\"", "", [Head, Inner, ""]),
     split_string(Head, " ", "", [ST, PT, ""]),
     ST \== "",
@@ -850,8 +851,7 @@ literal_statement(Text, rdf(S, P, literal(type(Type, Lex)))) :-
     one_part(Inner, Specials),
     resource_token(ST, Text, S),
     resource_token(PT, Text, P),
-    atom_string(Lex, Inner),
-    rdf_equal(Type, xsd:string).
+    string_literal(Inner, O).
 
 %!  general_statement(+Text, -Triple) is det.
 %
@@ -1036,9 +1036,7 @@ object_codes(Codes, Token, Term) :-
     ;   quoted(Token, _)
     ->  sub_string(Token, 1, _, 1, Inner),
         unescape(Inner, Token, LexString),
-        atom_string(Lex, LexString),
-        rdf_equal(Type, xsd:string),
-        Term = literal(type(Type, Lex))
+        string_literal(LexString, Term)
     ;   lang_split(Codes, LexCodes, Lang)
     ->  unescape_codes(LexCodes, Token, Unescaped),
         atom_codes(Lex, Unescaped),
@@ -1053,6 +1051,13 @@ object_codes(Codes, Token, Term) :-
         Term = literal(type(Type, Lex))
     ;   oro_name_iri(Token, Term)
     ).
+
+%   string_literal(+LexString, -Term): the xsd:string literal of
+%   LexString (unescaped), as a quoted object token gives it.
+
+string_literal(LexString, literal(type(Type, Lex))) :-
+    atom_string(Lex, LexString),
+    rdf_equal(Type, xsd:string).
 
 %   typed_split(+Codes, -Lex, -Type): split at the last `^^` that has
 %   no quote after it, i.e. the last `^^` outside the quoted lexical
