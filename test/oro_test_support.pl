@@ -11,6 +11,7 @@
             test_literal/3,             % +Type, +Lex, -Literal
             test_wait_until/2,          % :Condition, +Seconds
             test_process_wait/3,        % +Pid, -Status, +Seconds
+            test_set_text/2,            % +Elements, -Text
             test_server_start/1,        % +Options
             test_server_start_testsuite/0,
             test_server_start_testsuite/1, % +Options
@@ -255,6 +256,15 @@ exited(Pid, Status) :-
     process_wait(Pid, Status, [timeout(0)]),
     Status \== timeout.
 
+%!  test_set_text(+Elements, -Text) is det.
+%
+%   Text is the ORO set of Elements (texts), unquoted, as a request
+%   parameter: `[e1, e2, ...]`.
+
+test_set_text(Elements, Text) :-
+    must_be(list, Elements),
+    atomic_list_concat(Elements, ', ', Inner),
+    format(string(Text), "[~w]", [Inner]).
 
                  /*******************************
                  *       IN-PROCESS SERVER      *

@@ -879,8 +879,7 @@ test(discriminate_vervet_macaque_coconut,
     cat_discriminate_value(Reply, V).
 test(discriminate_seed, true(V == [[], ["hasColor"]])) :-
     cat_seed_statements(Statements),
-    atomic_list_concat(Statements, ', ', Joined),
-    format(string(Add), "[~w]", [Joined]),
+    test_set_text(Statements, Add),
     cat_discriminate_after([Add], "[plant1, animal1, animal2, animal3]", V).
 test(discriminate_empty, true(Reply == ok("[[],[]]"))) :-
     cat_session([], discriminate, ["[]"], Reply).
@@ -947,8 +946,7 @@ cat_start_openrobots :-
 
 cat_seed_add(Add) :-
     cat_seed_statements(Statements),
-    atomic_list_concat(Statements, ', ', Joined),
-    format(string(Add), "[~w]", [Joined]).
+    test_set_text(Statements, Add).
 
 cat_seed_discriminate(Set, V) :-
     cat_seed_add(Add),

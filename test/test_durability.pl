@@ -528,8 +528,7 @@ durability_batch_request(Round, B, Size, [Set]) :-
     random_between(1, 200, Size),
     numlist(1, Size, Is),
     maplist(durability_statement(Round, B), Is, Statements),
-    atomic_list_concat(Statements, ', ', Body),
-    format(string(Set), "[~w]", [Body]).
+    test_set_text(Statements, Set).
 
 durability_statement(Round, B, I, S) :-
     format(string(S), "d_~d_~d_~d crashTest v_~d_~d", [Round, B, I, Round, B]).
@@ -705,8 +704,7 @@ durability_op_request(update(N), update, [Set]) :-
 durability_op_set(Prefix, R, S, From, To, Set) :-
     numlist(From, To, Is),
     maplist(durability_op_statement(Prefix, R, S), Is, Statements),
-    atomic_list_concat(Statements, ', ', Body),
-    format(string(Set), "[~w]", [Body]).
+    test_set_text(Statements, Set).
 
 durability_op_statement(Prefix, R, S, I, Statement) :-
     format(string(Statement), "~w_~d_~d_~d crashTest v_~d_~d",
@@ -967,8 +965,7 @@ durability_hold_run(Dir, Hold, Size, Reply-Refused-Status-Count) :-
 durability_hold_request(Pid, Port, Hold, Size, Reply, Refused, Status) :-
     numlist(1, Size, Is),
     maplist(durability_held_statement, Is, Statements),
-    atomic_list_concat(Statements, ', ', Body),
-    format(string(Set), "[~w]", [Body]),
+    test_set_text(Statements, Set),
     format(string(HoldParam), "\"~w\"", [Hold]),
     directory_file_path(Hold, started, Started),
     directory_file_path(Hold, go, Go),
@@ -1090,8 +1087,7 @@ test(sigterm_reply_agrees_with_store,
 durability_add_then_term(Pid, Port, Size, Reply, Status) :-
     numlist(1, Size, Is),
     maplist(durability_held_statement, Is, Statements),
-    atomic_list_concat(Statements, ', ', Body),
-    format(string(Set), "[~w]", [Body]),
+    test_set_text(Statements, Set),
     oro_connect(Port, Conn),
     call_cleanup(( oro_send(Conn, add, [Set]),
                    process_kill(Pid, term),

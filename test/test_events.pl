@@ -1229,8 +1229,7 @@ ev_big_batch(Round, Set) :-
                  format(string(S), "ev_big_~d_~d_~w ev_big_p ev_big_o",
                         [Round, K, Long])
                ), Ss),
-    atomic_list_concat(Ss, ', ', Inner),
-    format(string(Set), "[~w]", [Inner]).
+    test_set_text(Ss, Set).
 
 %   ev_big_load(+Conn, +Round, :Done, -Outcome): rounds until Done
 %   holds; Outcome is `served`, not_served(Round, Replies) or
@@ -1631,8 +1630,7 @@ ev_stress_statements(I, K, Text) :-
     findall(S, ( between(1, K, J),
                  format(string(S), "c~d_~d state on", [J, I])
                ), Ss),
-    atomic_list_concat(Ss, ', ', Inner),
-    format(string(Text), "[~w]", [Inner]).
+    test_set_text(Ss, Text).
 
 ev_stress_client(Port, I, M, K, Done) :-
     ev_stress_statements(I, K, Text),

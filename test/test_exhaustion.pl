@@ -582,8 +582,7 @@ test(large_request_stacks_released, [true(Got == [ok, true])]) :-
 exh_large_set(N, Set) :-
     numlist(1, N, Is),
     maplist(exh_large_statement, Is, Statements),
-    atomic_list_concat(Statements, ', ', Body),
-    format(string(Set), "[~w]", [Body]).
+    test_set_text(Statements, Set).
 
 exh_large_statement(I, S) :-
     format(string(S), "exl~d exlp exlo~d", [I, I]).

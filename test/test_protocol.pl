@@ -1272,7 +1272,7 @@ srv_client_work(Conn, N, Result) :-
     foldl(srv_client_batch(Conn, N), Batches, [], Bad),
     numlist(1, 200, Is),
     maplist(srv_cc_statement(N), Is, All),
-    srv_set_text(All, AllText),
+    test_set_text(All, AllText),
     oro_call(Conn, check, [AllText], Check, 30),
     (   Bad == [],
         Check == ok("true")
@@ -1285,7 +1285,7 @@ srv_client_batch(Conn, N, B, Bad0, Bad) :-
     To is From + 9,
     numlist(From, To, Is),
     maplist(srv_cc_statement(N), Is, Statements),
-    srv_set_text(Statements, Text),
+    test_set_text(Statements, Text),
     oro_call(Conn, add, [Text], Reply, 30),
     (   Reply == ok("")
     ->  Bad = Bad0
@@ -1294,10 +1294,6 @@ srv_client_batch(Conn, N, B, Bad0, Bad) :-
 
 srv_cc_statement(N, I, Statement) :-
     format(string(Statement), "cc_~d_~d ccMember ccSet", [N, I]).
-
-srv_set_text(Statements, Text) :-
-    atomic_list_concat(Statements, ', ', Inner),
-    atomic_list_concat(['[', Inner, ']'], Text).
 
 %   srv_collect(+N, +Queue, -Results): N results, 120 s at most in all
 %   (a missing one is reported as missing).

@@ -354,8 +354,7 @@ rb_client_churn(Port, K, N) :-
                                      [K, I, J, K, I, J])
                             ),
                          Ss),
-                 atomic_list_concat(Ss, ', ', Body),
-                 format(string(Set), "[~w]", [Body]),
+                 test_set_text(Ss, Set),
                  oro_call(Conn, add, [Set], ok("")),
                  format(string(Check), "[rbn_~d_~d_1 isAt rbt_~d_~d_1]",
                         [K, I, K, I]),

@@ -77,10 +77,6 @@ soak_triple(I, sk(J, M), rdf(S, P, O)) :-
     soak_iri(skp, P),
     soak_iri(OName, O).
 
-soak_set(Texts, Set) :-
-    atomic_list_concat(Texts, ', ', Inner),
-    format(string(Set), "[~w]", [Inner]).
-
 soak_random_statement(sk(J, M)) :-
     soak_subjects(NS),
     soak_objects(NO),
@@ -191,7 +187,7 @@ soak_operation(R, Conn, S0, S) :-                       % add
     S0 = c(I, Model0, Sh, W, E, Log, P),
     soak_random_statements(Statements),
     maplist(soak_text(I), Statements, Texts),
-    soak_set(Texts, Set),
+    test_set_text(Texts, Set),
     soak_call(Conn, add, [Set], Reply),
     (   Reply == ok("")
     ->  list_to_ord_set(Statements, New),
@@ -205,7 +201,7 @@ soak_operation(R, Conn, S0, S) :-                       % remove
     S0 = c(I, Model0, Sh, W, E, Log, P),
     soak_random_statements(Statements),
     maplist(soak_text(I), Statements, Texts),
-    soak_set(Texts, Set),
+    test_set_text(Texts, Set),
     soak_call(Conn, remove, [Set], Reply),
     (   Reply == ok("")
     ->  list_to_ord_set(Statements, Old),
@@ -240,7 +236,7 @@ soak_operation(R, Conn, S0, S) :-                       % check
     length(Statements, K),
     maplist(soak_random_statement, Statements),
     maplist(soak_text(I), Statements, Texts),
-    soak_set(Texts, Set),
+    test_set_text(Texts, Set),
     (   forall(member(St, Statements), memberchk(St, Model))
     ->  Expected = ok("true")
     ;   Expected = ok("false")
@@ -302,7 +298,7 @@ soak_operation(_, Conn, S0, S) :-                       % shared
     S0 = c(I, Model, Sh0, W, E, Log, P),
     random_between(0, 4, K),
     soak_shared(I, K, Texts),
-    soak_set(Texts, Set),
+    test_set_text(Texts, Set),
     soak_call(Conn, add, [Set], Reply),
     (   Reply == ok("")
     ->  append(Texts, Sh0, Sh),
