@@ -1,6 +1,7 @@
 :- module(bench_common,
           [ bench_machine/0,
             bench_pin_to_cpu/1,         % +CPU
+            bench_pin_option/1,         % +Options
             bench_cpus/1,               % -CPUs
             bench_set_cpus/1,           % +CPUs
             bench_list_option/3,        % ?Option, +Options, +Default
@@ -153,6 +154,17 @@ term_list(Term, List) :-
 bench_pin_to_cpu(CPU) :-
     must_be(nonneg, CPU),
     bench_set_cpus(CPU).
+
+%!  bench_pin_option(+Options) is det.
+%
+%   bench_pin_to_cpu/1 if Options (of argv_options/3) have pin(CPU), as
+%   the benchmarks' `--pin=CPU` gives; nothing otherwise.
+
+bench_pin_option(Options) :-
+    (   option(pin(CPU), Options)
+    ->  bench_pin_to_cpu(CPU)
+    ;   true
+    ).
 
 %!  bench_set_cpus(+CPUs) is det.
 %!  bench_cpus(-CPUs) is det.

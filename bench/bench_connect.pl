@@ -27,10 +27,7 @@ main :-
     current_prolog_flag(argv, Argv),
     argv_options(Argv, _, Options),
     option(samples(N), Options, 1000),
-    (   option(pin(CPU), Options)
-    ->  bench_pin_to_cpu(CPU)
-    ;   true
-    ),
+    bench_pin_option(Options),
     bench_machine,
     format("~n| server | connect, check, close: median | p99 | check on an open \c
             connection: median | p99 |~n|---|---|---|---|---|~n"),

@@ -41,10 +41,7 @@ main :-
     argv_options(Argv, _, Options),
     option(requests(N), Options, 10000),
     must_be(positive_integer, N),
-    (   option(pin(CPU), Options)
-    ->  bench_pin_to_cpu(CPU)
-    ;   true
-    ),
+    bench_pin_option(Options),
     bench_machine,
     format("~n| round | request | median | p99 | server CPU a request \c
             | of which the gc thread |~n|---|---|---|---|---|---|~n"),
