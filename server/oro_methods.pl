@@ -1,5 +1,7 @@
 :- module(oro_methods,
           [ oro_dispatch/4,             % +Context, +Method, +Params, -Reply
+            oro_prepare/3,              % +Method, +Params, -Prepared
+            oro_perform/3,              % +Context, +Prepared, -Reply
             oro_connection_closed/1,    % +Context
             oro_method_signature/2,     % ?Name, ?Signature
             oro_simple_signature/2      % +Signature, -Text
@@ -70,7 +72,51 @@ listed by listMethods, listSimpleMethods and help.
 %   error(ExceptionName, Message).
 
 oro_dispatch(Context, Method, Params, Reply) :-
-    (   catch(dispatch(Context, Method, Params, Value), Error, true)
+    reply(dispatch(Context, Method, Params), Reply).
+
+%!  oro_prepare(+Method, +Params, -Prepared) is det.
+%
+%   The part of the request Method(Params) that does not depend on the
+%   store, done ahead: the method found, its parameters decoded, and
+%   the statements a method adds parsed (see statements_param/2).  The
+%   server prepares a request while the one before it is being
+%   answered, when a client sends them back to back.  Prepared is given
+%   to oro_perform/3; it is prepared(Impl, Name, Args), or
+%   request(Method, Params) when the preparation failed (the request is
+%   then dispatched again by oro_perform/3, which answers with the
+%   error).  A statement that does not parse is left as text, for the
+%   method to reject.
+
+oro_prepare(Method, Params, Prepared) :-
+    (   catch(prepare(Method, Params, Prepared0), _, fail)
+    ->  Prepared = Prepared0
+    ;   Prepared = request(Method, Params)
+    ).
+
+prepare(Method, Params, prepared(Impl, Name, Args)) :-
+    method_for(Method, Params, Sig, Impl, Name),
+    Sig =.. [_|Types],
+    decode_params(Types, Params, Method, Args0),
+    (   statements_param(Sig, N)
+    ->  parse_ahead(N, Args0, Args)
+    ;   Args = Args0
+    ).
+
+%!  oro_perform(+Context, +Prepared, -Reply) is det.
+%
+%   Execute a request prepared by oro_prepare/3 for the connection
+%   Context; Reply as for oro_dispatch/4.
+
+oro_perform(Context, request(Method, Params), Reply) :-
+    !,
+    oro_dispatch(Context, Method, Params, Reply).
+oro_perform(Context, prepared(Impl, Name, Args), Reply) :-
+    reply(call_method(Impl, Name, Context, Args), Reply).
+
+%   reply(:Goal, -Reply): call(Goal, Value), its outcome as a reply.
+
+reply(Goal, Reply) :-
+    (   catch(call(Goal, Value), Error, true)
     ->  true
     ;   Error = error(oro_method(failed), _)
     ),
@@ -84,26 +130,55 @@ oro_dispatch(Context, Method, Params, Reply) :-
     ).
 
 dispatch(Context, Method, Params, Value) :-
+    method_for(Method, Params, Sig, Impl, Name),
+    Sig =.. [_|Types],
+    decode_params(Types, Params, Method, Args),
+    call_method(Impl, Name, Context, Args, Value).
+
+%   method_for(+Method, +Params, -Sig, -Impl, -Name): the method called
+%   Method with as many parameters as Params: its declared signature,
+%   implementation and name.
+
+method_for(Method, Params, Skeleton, Impl, Exact) :-
     length(Params, Arity),
     atom_string(Exact, Method),
     functor(Skeleton, Exact, Arity),
     method(Skeleton, _, _, Impl),           % the usual case: exact name
-    !,
-    Skeleton =.. [_|Types],
-    decode_params(Types, Params, Method, Args),
-    call_method(Impl, Exact, Context, Args, Value).
-dispatch(Context, Method, Params, Value) :-
+    !.
+method_for(Method, Params, Sig, Impl, Declared) :-
     string_lower(Method, Lower),
     atom_string(Name, Lower),
-    findall(Sig-Impl, named_method(Name, Sig, Impl), Candidates),
+    findall(Sig0-Impl0, named_method(Name, Sig0, Impl0), Candidates),
     length(Params, Arity),
     (   Candidates == []
     ->  throw(error(oro_method(unknown, Method), _))
     ;   include(has_arity(Arity), Candidates, [Sig-Impl|_])
-    ->  Sig =.. [Declared|Types],
-        decode_params(Types, Params, Method, Args),
-        call_method(Impl, Declared, Context, Args, Value)
+    ->  functor(Sig, Declared, _)
     ;   throw(error(oro_method(arity(Arity), Method), _))
+    ).
+
+%   statements_param(?Signature, ?N): the Nth parameter of the built-in
+%   method Signature is a set of statements it adds (oro_add/3,
+%   oro_update/2), which may be given parsed, as rdf/3 terms.
+
+statements_param(add(set), 1).
+statements_param(add(set, string), 1).
+statements_param(update(set), 1).
+statements_param(addForAgent(string, set), 2).
+statements_param(addForAgent(string, set, string), 2).
+statements_param(updateForAgent(string, set), 2).
+
+%   parse_ahead(+N, +Args0, -Args): the Nth argument, statements as
+%   text, replaced by their triples if they are all complete statements.
+%   (oro_statements/3 normalises such triples again, at a fifth of the
+%   cost of parsing them: bench/RESULTS.md.)
+
+parse_ahead(N, Args0, Args) :-
+    nth1(N, Args0, Statements, Rest),
+    (   catch(oro_statements(Statements, Triples, []), _, fail),
+        ground(Triples)
+    ->  nth1(N, Args, Triples, Rest)
+    ;   Args = Args0
     ).
 
 named_method(Lower, Sig, Impl) :-

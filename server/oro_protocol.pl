@@ -1,6 +1,7 @@
 :- module(oro_protocol,
           [ oro_reader/3,               % +In, -Reader, +Options
             oro_read_request/3,         % +Reader0, -Request, -Reader
+            oro_reader_pending/1,       % +Reader
             oro_drain_input/3,          % +In, +MaxBytes, +Seconds
             oro_write_ok/2,             % +Out, +Value
             oro_write_error/3,          % +Out, +ExceptionName, +Message
@@ -169,6 +170,19 @@ oro_read_request(oro_reader(In, Limit, Mode, State0), Request,
     ;   State = State1
     ),
     debug_request(Request).
+
+%!  oro_reader_pending(+Reader) is semidet.
+%
+%   True if more input is there for Reader right now: bytes it has read
+%   but not returned yet, bytes waiting on its stream, or the end of
+%   its input.  Does not block.  (The server prepares the next request of a client that
+%   sends them back to back while it answers the previous one.)
+
+oro_reader_pending(oro_reader(In, _, _, state(_, _, Tokens))) :-
+    (   Tokens \== []
+    ->  true
+    ;   catch(wait_for_input([In], [_], 0), _, fail)
+    ).
 
 %!  oro_drain_input(+In, +MaxBytes, +Seconds) is det.
 %

@@ -328,6 +328,40 @@ test(hash_characters, Rs == [request("a#b", ["#en", "#end", "##"])]) :-
     requests("a#b\n#en\n#end\n##\n#end#", [], Rs).
 test(nul, Rs == [request("a\u0000b", ["\u0000"])]) :-
     requests("a\u0000b\n\u0000\n#end#\n", [], Rs).
+test(pending_after_first_of_two, Pending == true) :-
+    setup_call_cleanup(
+        open_string("a\n#end#\nb\nx\n#end#\n", In),
+        ( oro_reader(In, R0, []),
+          oro_read_request(R0, request("a", []), R1),
+          pending(R1, Pending)
+        ),
+        close(In)).
+test(pending_on_socket, Pending == [false, true]) :-
+    tcp_socket(Listen),
+    tcp_bind(Listen, '127.0.0.1':Port),
+    tcp_listen(Listen, 1),
+    tcp_open_socket(Listen, Server),
+    tcp_connect('127.0.0.1':Port, Client, []),
+    setup_call_cleanup(
+        tcp_accept(Listen, Socket, _),
+        setup_call_cleanup(
+            tcp_open_socket(Socket, Pair),
+            ( stream_pair(Pair, In, _),
+              oro_reader(In, R0, []),
+              format(Client, "a\n#end#\n", []),
+              flush_output(Client),
+              oro_read_request(R0, request("a", []), R1),
+              pending(R1, P1),
+              format(Client, "b\n#end#\n", []),
+              flush_output(Client),
+              wait_for_input([In], _, 10),
+              pending(R1, P2),
+              Pending = [P1, P2]
+            ),
+            close(Pair, [force(true)])),
+        ( close(Client, [force(true)]),
+          close(Server, [force(true)])
+        )).
 test(invalid_utf8, Rs == [bad(encoding), request("ok", [])]) :-
     append([`a\n`, [0xFF], `\n#end#\nok\n#end#\n`], Bytes),
     requests(bytes(Bytes), [], Rs).
@@ -366,6 +400,12 @@ test(unbound_stream, error(instantiation_error)) :-
     oro_reader(_, _, []).
 
 :- end_tests(oro_read_request).
+
+pending(Reader, Pending) :-
+    (   oro_reader_pending(Reader)
+    ->  Pending = true
+    ;   Pending = false
+    ).
 
 
                  /*******************************
