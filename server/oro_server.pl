@@ -624,11 +624,30 @@ connection_ended(Context, error(timeout_error(read, _), _)) :-
 connection_ended(Context, Error) :-
     debug(oro(server), 'Connection ~q ended: ~q', [Context.peer, Error]).
 
-serve_requests(Context, Reader0, Out) :-
+serve_requests(Context, Reader, Out) :-
+    Ahead = ahead(none),
+    setup_call_catcher_cleanup(true,
+                               serve_requests(Context, Reader, Out, Ahead),
+                               Catcher,
+                               stop_ahead(Ahead, Catcher)).
+
+serve_requests(Context, Reader0, Out, Ahead) :-
     oro_read_request(Reader0, Request, Reader),
-    (   handle_request(Request, Context, Out)
-    ->  serve_requests(Context, Reader, Out)
+    (   serve_request(Request, Context, Out, Reader, Ahead)
+    ->  serve_requests(Context, Reader, Out, Ahead)
     ;   true
+    ).
+
+%   serve_request(+Request, +Context, +Out, +Reader, +Ahead) is semidet:
+%   answer Request, here or ahead (see REQUESTS AHEAD); fails when the
+%   connection must end.
+
+serve_request(Request, Context, Out, Reader, Ahead) :-
+    (   ahead_request(Request, Context, Reader, Ahead, Prepared),
+        have_helper(Context, Ahead)
+    ->  send_ahead(Ahead, Prepared)
+    ;   ahead_drained(Ahead),
+        handle_request(Request, Context, Out)
     ).
 
 %   handle_request(+Request, +Context, +Out) is semidet: fails when the
@@ -670,20 +689,201 @@ handle_request(request(Method, _), Context, Out) :-
     with_mutex(Context.mutex, oro_write_closing(Out)),
     fail.
 handle_request(request(Method, Params), Context, Out) :-
+    answer(Context, request(Method, Params), Out).
+
+%   answer(+Context, +Prepared, +Out) is semidet: perform the request
+%   (oro_perform/3) and write its reply, holding the connection's mutex;
+%   fail if the server is shutting down.
+
+answer(Context, Prepared, Out) :-
     Mutex = Context.mutex,
-    with_mutex(Mutex, answer(Mutex, Context, Method, Params, Out)).
+    with_mutex(Mutex, answer(Mutex, Context, Prepared, Out)).
 
-%   answer(+Mutex, +Context, +Method, +Params, +Out) is semidet: call the
-%   method and write its reply, holding the connection's Mutex; fail if
-%   the server is shutting down.  (A named predicate, as a meta-called
-%   if-then-else would be compiled again on every request.)
+%   (A named predicate, as a meta-called if-then-else would be compiled
+%   again on every request.)
 
-answer(Mutex, Context, Method, Params, Out) :-
+answer(Mutex, Context, Prepared, Out) :-
     \+ closed_connection(Mutex),
-    oro_store_read(oro_dispatch(Context, Method, Params, Reply)),
+    oro_store_read(oro_perform(Context, Prepared, Reply)),
     write_reply(Reply, Out).
 
 write_reply(ok(Value), Out) :-
     oro_write_ok(Out, Value).
 write_reply(error(Name, Message), Out) :-
     oro_write_error(Out, Name, Message).
+
+                 /*******************************
+                 *        REQUESTS AHEAD        *
+                 *******************************/
+
+%   A client may send its next request before it has read the reply to
+%   the previous one (ORO-SPEC lets it pipeline).  A connection's worker
+%   then prepares the next request (oro_prepare/3: finding the method,
+%   decoding its parameters, parsing the statements it adds) while a
+%   helper thread of the connection answers the previous one: a client
+%   streaming large batches has them parsed on one core while they are
+%   stored on the other.
+%
+%   A request goes ahead, to the helper, when the helper still has
+%   requests to answer (replies keep the order of the requests), or when
+%   it is large (ahead_min_bytes/1) and the next one is already there;
+%   any other is answered by the worker itself, once the helper has
+%   answered all it was given.  Only methods that do not use the
+%   connection's context go ahead: the helper has a copy of the context,
+%   and the subscribers an events method makes must be the worker's.
+%   At most ahead_max/1 requests wait for the helper, so a client
+%   cannot make the server read its requests ahead without bound.
+%
+%   Ahead is ahead(none), or ahead(helper(Thread, Jobs, Done, Given))
+%   once the helper is made: Given requests were sent to the queue Jobs
+%   and not yet answered, as the helper tells on the queue Done (`done`,
+%   or ended(Why) when the connection must end: the helper then stops).
+
+ahead_min_bytes(1024).
+ahead_max(2).
+
+ahead_request(request(Method, Params), Context, Reader, Ahead, Prepared) :-
+    (   ahead_busy(Ahead)
+    ->  true
+    ;   ahead_min_bytes(Min),
+        large_params(Params, 0, Min),
+        oro_reader_pending(Reader)
+    ),
+    length(Params, N),
+    N =< Context.max_params,
+    \+ string_lower(Method, "close"),
+    oro_prepare(Method, Params, Prepared),
+    Prepared = prepared(Impl, _, _),
+    \+ uses_context(Impl).
+
+large_params([Param|Params], Size0, Min) :-
+    string_length(Param, Length),
+    Size is Size0 + Length,
+    (   Size >= Min
+    ->  true
+    ;   large_params(Params, Size, Min)
+    ).
+
+uses_context(context(_)).
+uses_context(transaction(Impl)) :-
+    uses_context(Impl).
+
+%   have_helper(+Context, +Ahead): the connection has its helper,
+%   made now if needed; fails if it cannot be made (the request is then
+%   answered in turn).
+
+have_helper(_, Ahead) :-
+    Ahead = ahead(helper(_, _, _, _)),
+    !.
+have_helper(Context, Ahead) :-
+    message_queue_create(Jobs),
+    message_queue_create(Done),
+    (   catch(thread_create(ahead_helper(Context, Jobs, Done), Thread, []),
+              Error,
+              ( print_message(warning, Error),
+                fail
+              ))
+    ->  debug(oro(server), 'Connection ~q: requests ahead', [Context.peer]),
+        nb_setarg(1, Ahead, helper(Thread, Jobs, Done, 0))
+    ;   message_queue_destroy(Jobs),
+        message_queue_destroy(Done),
+        fail
+    ).
+
+%   send_ahead(+Ahead, +Prepared): give Prepared to the helper once
+%   fewer than ahead_max/1 wait.
+
+send_ahead(Ahead, Prepared) :-
+    ahead_max(Max),
+    ahead_wait(Ahead, Max),
+    Ahead = ahead(Helper),
+    Helper = helper(_, Jobs, _, Given),
+    thread_send_message(Jobs, answer(Prepared)),
+    Given1 is Given + 1,
+    nb_setarg(4, Helper, Given1).
+
+%   ahead_busy(+Ahead): the helper has requests to answer.
+
+ahead_busy(Ahead) :-
+    Ahead = ahead(helper(_, _, _, _)),
+    ahead_collect(Ahead, [timeout(0)]),
+    Ahead = ahead(helper(_, _, _, Given)),
+    Given > 0.
+
+%   ahead_drained(+Ahead): wait until the helper has answered every
+%   request it was given.
+
+ahead_drained(Ahead) :-
+    ahead_wait(Ahead, 1).
+
+%   ahead_wait(+Ahead, +Max): wait until fewer than Max requests are
+%   given to the helper and not answered.
+
+ahead_wait(Ahead, Max) :-
+    (   Ahead = ahead(helper(_, _, _, Given)),
+        Given >= Max
+    ->  ahead_collect(Ahead, []),
+        ahead_wait(Ahead, Max)
+    ;   true
+    ).
+
+%   ahead_collect(+Ahead, +Options): take one message of the helper
+%   (waiting as thread_get_message/3's Options say); throws
+%   oro_ahead_ended(Why) if the helper stopped and the connection must
+%   end.
+
+ahead_collect(Ahead, Options) :-
+    Ahead = ahead(Helper),
+    Helper = helper(_, _, Done, Given),
+    (   thread_get_message(Done, Message, Options)
+    ->  (   Message == done
+        ->  Given1 is Given - 1,
+            nb_setarg(4, Helper, Given1)
+        ;   Message = ended(Why),
+            throw(oro_ahead_ended(Why))
+        )
+    ;   true
+    ).
+
+%   ahead_helper(+Context, +Jobs, +Done): answer the requests sent on
+%   Jobs, in order, until `stop`, until the connection must end, or
+%   until the worker signals oro_ahead_stop.
+
+ahead_helper(Context, Jobs, Done) :-
+    catch(help_ahead(Context, Jobs, Done), oro_ahead_stop, true).
+
+help_ahead(Context, Jobs, Done) :-
+    thread_get_message(Jobs, Job),
+    (   Job = answer(Prepared)
+    ->  (   catch(answer(Context, Prepared, Context.out), Error, true)
+        ->  (   var(Error)
+            ->  thread_send_message(Done, done),
+                help_ahead(Context, Jobs, Done)
+            ;   thread_send_message(Done, ended(Error))
+            )
+        ;   thread_send_message(Done, ended(closed))
+        )
+    ;   true
+    ).
+
+%   stop_ahead(+Ahead, +Catcher): stop the helper, if any.  When the
+%   connection ends normally (Catcher is exit or fail) the helper has
+%   answered every request already; when it ends on an exception (the
+%   peer left, its events overflowed...), the helper is interrupted,
+%   as the worker would have been, and what it was not done with is
+%   not answered.
+
+stop_ahead(ahead(none), _) :-
+    !.
+stop_ahead(ahead(helper(Thread, Jobs, Done, _)), Catcher) :-
+    (   normal_end(Catcher)
+    ->  true
+    ;   catch(thread_signal(Thread, throw(oro_ahead_stop)), _, true)
+    ),
+    thread_send_message(Jobs, stop),
+    thread_join(Thread, _),
+    message_queue_destroy(Jobs),
+    message_queue_destroy(Done).
+
+normal_end(exit).
+normal_end(fail).

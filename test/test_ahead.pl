@@ -14,10 +14,17 @@
     connection answers the previous one.
 
     ahead_prepare checks, in process, that a prepared request is
-    answered as the dispatcher answers it.
+    answered as the dispatcher answers it; ahead_server drives a real
+    server over a socket with pipelined batches and checks the replies,
+    their order and the store.  Whether a connection used its helper is
+    seen through the server's debug message on oro(server)
+    (prolog:debug_print_hook/3, which also keeps such messages quiet).
 
     Run: swipl -g run_tests -t halt test/test_ahead.pl
 */
+
+:- dynamic
+    ahead_used/1.                       % Peer
 
                  /*******************************
                  *           PREPARED           *
@@ -109,3 +116,179 @@ parsed_again_same(Statement) :-
     oro_statements([Statement], Triples, []),
     oro_statements(Triples, Again, []),
     Again == Triples.
+
+                 /*******************************
+                 *            SERVER            *
+                 *******************************/
+
+:- begin_tests(ahead_server,
+               [ setup(start_ahead),
+                 cleanup(stop_ahead)
+               ]).
+
+test(pipelined_batches_all_added,
+     true(Adds-Count-Used == Oks-1000-true)) :-
+    test_ok(reset, []),
+    used_ahead(_),
+    numlist(1, 10, Ks),
+    maplist(batch_request(add, p), Ks, Requests),
+    count_request(Count0),
+    append(Requests, [Count0], All),
+    pipelined(All, Replies),
+    length(Adds, 10),
+    append(Adds, [Last], Replies),
+    maplist(=(ok("")), Oks),
+    length(Oks, 10),
+    prefixed(Last, "p", Found),
+    length(Found, Count),
+    used_ahead(Used).
+test(replies_in_order_of_requests, true(Kinds == Expected)) :-
+    test_ok(reset, []),
+    batch_request(add, q, 1, Add1),
+    check_request("q1_3 isOn table1", Check1),
+    batch_text(q, 2, Batch2),
+    format(string(Bad), "add\n[~s, \"broken isOn\"]\n#end#\n", [Batch2]),
+    check_request("q2_3 isOn table1", Check2),
+    batch_request(add, q, 3, Add3),
+    Stats = "stats\n#end#\n",
+    check_request("q3_3 isOn table1", Check3),
+    pipelined([Add1, Check1, Bad, Check2, Add3, Stats, Check3], Replies),
+    maplist(reply_kind, Replies, Kinds),
+    Expected = [ok(""), ok("true"), error, ok("false"), ok(""), ok(map),
+                ok("true")].
+test(error_as_when_alone, true(Ahead == Alone)) :-
+    test_ok(reset, []),
+    batch_text(r, 1, Batch),
+    format(string(Bad), "add\n[~s, \"broken isOn\"]\n#end#\n", [Batch]),
+    batch_request(add, r, 2, Add2),
+    pipelined([Bad, Add2], [Ahead, _]),
+    test_ok(reset, []),
+    pipelined([Bad], [Alone]).
+test(close_after_pipelined, true(Replies == Expected)) :-
+    test_ok(reset, []),
+    numlist(1, 4, Ks),
+    maplist(batch_request(add, s), Ks, Requests),
+    append(Requests, ["close\n#end#\n"], All),
+    Expected = [ok(""), ok(""), ok(""), ok(""), closing, end_of_file],
+    test_server_port(Port),
+    setup_call_cleanup(
+        oro_connect(Port, C, [nodelay(true)]),
+        ( atomics_to_string(All, Text),
+          oro_send_raw(C, Text),
+          test_receive_n(C, 6, Replies)
+        ),
+        oro_disconnect(C)).
+test(client_leaving_ends_connection, true(Whole-Alive == true-true)) :-
+    test_ok(reset, []),
+    numlist(1, 30, Ks),
+    maplist(batch_request(add, t), Ks, Requests),
+    atomics_to_string(Requests, Text),
+    test_server_port(Port),
+    setup_call_cleanup(
+        oro_connect(Port, C, [nodelay(true)]),
+        oro_send_raw(C, Text),
+        oro_disconnect(C)),
+    test_wait_until(test_server_connections(0), 10),
+    count_request(Count),
+    pipelined([Count], [Reply]),
+    prefixed(Reply, "t", Found),
+    length(Found, N),
+    (   N mod 100 =:= 0
+    ->  Whole = true
+    ;   Whole = N
+    ),
+    (   test_call(hello, [], ok(_))
+    ->  Alive = true
+    ;   Alive = false
+    ).
+test(small_requests_not_ahead, true(Used == false)) :-
+    test_ok(reset, []),
+    used_ahead(_),
+    numlist(1, 50, Ks),
+    maplist([K, R]>>format(string(R), "add\n[\"u~d isOn table1\"]\n#end#\n",
+                           [K]),
+            Ks, Requests),
+    pipelined(Requests, Replies),
+    length(Replies, 50),
+    maplist(==(ok("")), Replies),
+    used_ahead(Used).
+
+:- end_tests(ahead_server).
+
+start_ahead :-
+    test_server_start_testsuite,
+    retractall(ahead_used(_)),
+    debug(oro(server)).
+
+stop_ahead :-
+    nodebug(oro(server)),
+    retractall(ahead_used(_)),
+    test_server_stop.
+
+:- multifile prolog:debug_print_hook/3.
+
+prolog:debug_print_hook(oro(server), Format, Args) :-
+    (   Format == 'Connection ~q: requests ahead'
+    ->  strip_module(Args, _, [Peer]),
+        assertz(ahead_used(Peer))
+    ;   true
+    ).
+
+%   used_ahead(-Used): whether a connection used its helper since the
+%   last call.
+
+used_ahead(Used) :-
+    (   retract(ahead_used(_))
+    ->  Used = true,
+        retractall(ahead_used(_))
+    ;   Used = false
+    ).
+
+%   pipelined(+Requests, -Replies): the texts of Requests sent in one
+%   write on a new connection, and a reply for each.
+
+pipelined(Requests, Replies) :-
+    test_server_port(Port),
+    atomics_to_string(Requests, Text),
+    length(Requests, N),
+    setup_call_cleanup(
+        oro_connect(Port, C, [nodelay(true)]),
+        ( oro_send_raw(C, Text),
+          test_receive_n(C, N, Replies)
+        ),
+        oro_disconnect(C)).
+
+%   batch_request(+Method, +Prefix, +K, -Request): a request of 100
+%   statements `PrefixK_I isOn tableJ`, over the ahead threshold.
+
+batch_request(Method, Prefix, K, Request) :-
+    batch_text(Prefix, K, Batch),
+    format(string(Request), "~w\n[~s]\n#end#\n", [Method, Batch]).
+
+batch_text(Prefix, K, Batch) :-
+    numlist(1, 100, Is),
+    maplist([I, S]>>( J is I mod 3 + 1,
+                      format(string(S), "\"~w~d_~d isOn table~d\"",
+                             [Prefix, K, I, J])
+                    ),
+            Is, Statements),
+    atomic_list_concat(Statements, ', ', Batch).
+
+check_request(Statement, Request) :-
+    format(string(Request), "check\n[\"~w\"]\n#end#\n", [Statement]).
+
+count_request("find\nx\n[?x isOn ?t]\n#end#\n").
+
+%   prefixed(+Reply, +Prefix, -Names): the names of the list Reply that
+%   start with Prefix (the test ontology has things on tables too).
+
+prefixed(Reply, Prefix, Names) :-
+    test_set(Reply, All),
+    include([N]>>string_concat(Prefix, _, N), All, Names).
+
+reply_kind(ok(V), ok(Kind)) :-
+    (   sub_string(V, 0, 1, _, "{")
+    ->  Kind = map
+    ;   Kind = V
+    ).
+reply_kind(error(_, _), error).
