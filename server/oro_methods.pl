@@ -72,7 +72,7 @@ listed by listMethods, listSimpleMethods and help.
 %   error(ExceptionName, Message).
 
 oro_dispatch(Context, Method, Params, Reply) :-
-    reply(dispatch(Context, Method, Params), Reply).
+    reply(dispatch(Context, Method, Params, Value), Value, Reply).
 
 %!  oro_prepare(+Method, +Params, -Prepared) is det.
 %
@@ -111,12 +111,13 @@ oro_perform(Context, request(Method, Params), Reply) :-
     !,
     oro_dispatch(Context, Method, Params, Reply).
 oro_perform(Context, prepared(Impl, Name, Args), Reply) :-
-    reply(call_method(Impl, Name, Context, Args), Reply).
+    reply(call_method(Impl, Name, Context, Args, Value), Value, Reply).
 
-%   reply(:Goal, -Reply): call(Goal, Value), its outcome as a reply.
+%   reply(:Goal, ?Value, -Reply): the outcome of Goal, which binds Value,
+%   as a reply.
 
-reply(Goal, Reply) :-
-    (   catch(call(Goal, Value), Error, true)
+reply(Goal, Value, Reply) :-
+    (   catch(Goal, Error, true)
     ->  true
     ;   Error = error(oro_method(failed), _)
     ),

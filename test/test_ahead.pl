@@ -3,6 +3,7 @@
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(debug)).
+:- use_module(library(aggregate)).
 :- use_module('../server/oro_server').
 :- use_module('../server/oro_methods').
 :- use_module('../prolog/oro').
@@ -137,8 +138,8 @@ test(pipelined_batches_all_added,
     pipelined(All, Replies),
     length(Adds, 10),
     append(Adds, [Last], Replies),
-    maplist(=(ok("")), Oks),
     length(Oks, 10),
+    maplist(=(ok("")), Oks),
     prefixed(Last, "p", Found),
     length(Found, Count),
     used_ahead(Used).
@@ -213,7 +214,66 @@ test(small_requests_not_ahead, true(Used == false)) :-
     maplist(==(ok("")), Replies),
     used_ahead(Used).
 
+test(helper_ends_with_connection, true(Used-Back == true-true)) :-
+    test_ok(reset, []),
+    used_ahead(_),
+    thread_count(Before),
+    numlist(1, 5, Ks),
+    maplist(batch_request(add, v), Ks, Requests),
+    pipelined(Requests, _),
+    used_ahead(Used),
+    test_wait_until(test_server_connections(0), 10),
+    test_bool(test_wait_until(thread_count(Before), 10), Back).
+test(events_after_the_reply_that_caused_them,
+     true(First-Oks-Events == ok-5-true)) :-
+    test_ok(reset, []),
+    numlist(1, 5, Ks),
+    maplist(batch_request(add, w), Ks, Requests),
+    atomics_to_string(Requests, Text),
+    test_server_port(Port),
+    setup_call_cleanup(
+        oro_connect(Port, C, [nodelay(true)]),
+        ( oro_call(C, registerEvent,
+                   ["NEW_INSTANCE", "ON_TRUE", "x", "[?x isOn table1]"],
+                   ok(_), 10),
+          oro_send_raw(C, Text),
+          messages_until_oks(C, 5, 100, Messages)
+        ),
+        oro_disconnect(C)),
+    Messages = [Message1|_],
+    functor(Message1, First, _),
+    aggregate_all(count, member(ok(_), Messages), Oks),
+    (   memberchk(event(_, _), Messages)
+    ->  Events = true
+    ;   Events = false
+    ).
+
 :- end_tests(ahead_server).
+
+thread_count(N) :-
+    aggregate_all(count, thread_property(_, status(running)), N).
+
+%   messages_until_oks(+Conn, +N, +Max, -Messages): the messages of
+%   Conn in arrival order until N `ok` replies and one event after
+%   them (at most Max messages, each waited for 10 s at most).
+
+messages_until_oks(C, N, Max, [M|Ms]) :-
+    Max > 0,
+    oro_receive(C, M, 10),
+    M \== timeout,
+    M \== end_of_file,
+    !,
+    (   M = ok(_)
+    ->  N1 is N - 1
+    ;   N1 = N
+    ),
+    (   N1 =< 0,
+        M = event(_, _)
+    ->  Ms = []
+    ;   Max1 is Max - 1,
+        messages_until_oks(C, N1, Max1, Ms)
+    ).
+messages_until_oks(_, _, _, []).
 
 start_ahead :-
     test_server_start_testsuite,
