@@ -131,8 +131,7 @@ test(pipelined_batches_all_added,
      true(Adds-Count-Used == Oks-1000-true)) :-
     test_ok(reset, []),
     used_ahead(_),
-    numlist(1, 10, Ks),
-    maplist(batch_request(add, p), Ks, Requests),
+    batch_requests(p, 10, Requests),
     count_request(Count0),
     append(Requests, [Count0], All),
     pipelined(All, Replies),
@@ -167,28 +166,18 @@ test(error_as_when_alone, true(Ahead == Alone)) :-
     pipelined([Bad], [Alone]).
 test(close_after_pipelined, true(Replies == Expected)) :-
     test_ok(reset, []),
-    numlist(1, 4, Ks),
-    maplist(batch_request(add, s), Ks, Requests),
+    batch_requests(s, 4, Requests),
     append(Requests, ["close\n#end#\n"], All),
     Expected = [ok(""), ok(""), ok(""), ok(""), closing, end_of_file],
-    test_server_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, C, [nodelay(true)]),
-        ( atomics_to_string(All, Text),
-          oro_send_raw(C, Text),
-          test_receive_n(C, 6, Replies)
-        ),
-        oro_disconnect(C)).
+    atomics_to_string(All, Text),
+    connected(C, ( oro_send_raw(C, Text),
+                   test_receive_n(C, 6, Replies)
+                 )).
 test(client_leaving_ends_connection, true(Whole-Alive == true-true)) :-
     test_ok(reset, []),
-    numlist(1, 30, Ks),
-    maplist(batch_request(add, t), Ks, Requests),
+    batch_requests(t, 30, Requests),
     atomics_to_string(Requests, Text),
-    test_server_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, C, [nodelay(true)]),
-        oro_send_raw(C, Text),
-        oro_disconnect(C)),
+    connected(C, oro_send_raw(C, Text)),
     test_wait_until(test_server_connections(0), 10),
     count_request(Count),
     pipelined([Count], [Reply]),
@@ -213,13 +202,11 @@ test(small_requests_not_ahead, true(Used == false)) :-
     length(Replies, 50),
     maplist(==(ok("")), Replies),
     used_ahead(Used).
-
 test(helper_ends_with_connection, true(Used-Back == true-true)) :-
     test_ok(reset, []),
     used_ahead(_),
     thread_count(Before),
-    numlist(1, 5, Ks),
-    maplist(batch_request(add, v), Ks, Requests),
+    batch_requests(v, 5, Requests),
     pipelined(Requests, _),
     used_ahead(Used),
     test_wait_until(test_server_connections(0), 10),
@@ -227,19 +214,14 @@ test(helper_ends_with_connection, true(Used-Back == true-true)) :-
 test(events_after_the_reply_that_caused_them,
      true(First-Oks-Events == ok-5-true)) :-
     test_ok(reset, []),
-    numlist(1, 5, Ks),
-    maplist(batch_request(add, w), Ks, Requests),
+    batch_requests(w, 5, Requests),
     atomics_to_string(Requests, Text),
-    test_server_port(Port),
-    setup_call_cleanup(
-        oro_connect(Port, C, [nodelay(true)]),
-        ( oro_call(C, registerEvent,
-                   ["NEW_INSTANCE", "ON_TRUE", "x", "[?x isOn table1]"],
-                   ok(_), 10),
-          oro_send_raw(C, Text),
-          messages_until_oks(C, 5, 100, Messages)
-        ),
-        oro_disconnect(C)),
+    connected(C, ( oro_call(C, registerEvent,
+                            ["NEW_INSTANCE", "ON_TRUE", "x", "[?x isOn table1]"],
+                            ok(_), 10),
+                   oro_send_raw(C, Text),
+                   messages_until_oks(C, 5, 100, Messages)
+                 )),
     Messages = [Message1|_],
     functor(Message1, First, _),
     aggregate_all(count, member(ok(_), Messages), Oks),
@@ -308,15 +290,27 @@ used_ahead(Used) :-
 %   write on a new connection, and a reply for each.
 
 pipelined(Requests, Replies) :-
-    test_server_port(Port),
     atomics_to_string(Requests, Text),
     length(Requests, N),
+    connected(C, ( oro_send_raw(C, Text),
+                   test_receive_n(C, N, Replies)
+                 )).
+
+%   connected(-Conn, :Goal): Goal once on a new connection Conn to the
+%   unit's server (requests sent at once: nodelay), closed afterwards.
+
+connected(C, Goal) :-
+    test_server_port(Port),
     setup_call_cleanup(
         oro_connect(Port, C, [nodelay(true)]),
-        ( oro_send_raw(C, Text),
-          test_receive_n(C, N, Replies)
-        ),
+        once(Goal),
         oro_disconnect(C)).
+
+%   batch_requests(+Prefix, +N, -Requests): N adds of batch_request/4.
+
+batch_requests(Prefix, N, Requests) :-
+    numlist(1, N, Ks),
+    maplist(batch_request(add, Prefix), Ks, Requests).
 
 %   batch_request(+Method, +Prefix, +K, -Request): a request of 100
 %   statements `PrefixK_I isOn tableJ`, over the ahead threshold.
