@@ -112,6 +112,10 @@ normal_case("ahead1 rdf:type oro:Table").
 normal_case("ahead1 owl:sameAs ahead2").
 normal_case("ahead1 isOn http://example.org/t#table1").
 normal_case("ahead1 rdfs:comment \"quote \\\" and tab\\t\"").
+normal_case("\"ahead1\" isOn table1").
+normal_case("12 isOn table1").
+normal_case("_:b1 isOn _:b2").
+normal_case("<http://example.org/t#a> isOn table1").
 
 parsed_again_same(Statement) :-
     oro_statements([Statement], Triples, []),
