@@ -650,6 +650,15 @@ serve_request(Request, Context, Out, Reader, Ahead) :-
         handle_request(Request, Context, Out)
     ).
 
+%   dispatched_request(+Request, +Context): Request goes to the
+%   dispatcher (handle_request/3's last clause): it is neither `close`
+%   nor over the connection's max_params.
+
+dispatched_request(request(Method, Params), Context) :-
+    length(Params, N),
+    N =< Context.max_params,
+    \+ string_lower(Method, "close").
+
 %   handle_request(+Request, +Context, +Out) is semidet: fails when the
 %   connection must end.
 
@@ -742,16 +751,15 @@ write_reply(error(Name, Message), Out) :-
 ahead_min_bytes(1024).
 ahead_max(2).
 
-ahead_request(request(Method, Params), Context, Reader, Ahead, Prepared) :-
+ahead_request(Request, Context, Reader, Ahead, Prepared) :-
+    Request = request(Method, Params),
     (   ahead_busy(Ahead)
     ->  true
     ;   ahead_min_bytes(Min),
         large_params(Params, 0, Min),
         oro_reader_pending(Reader)
     ),
-    length(Params, N),
-    N =< Context.max_params,
-    \+ string_lower(Method, "close"),
+    dispatched_request(Request, Context),
     oro_prepare(Method, Params, Prepared),
     Prepared = prepared(Impl, _, _),
     \+ uses_context(Impl).
@@ -802,13 +810,22 @@ send_ahead(Ahead, Prepared) :-
     Given1 is Given + 1,
     nb_setarg(4, Helper, Given1).
 
-%   ahead_busy(+Ahead): the helper has requests to answer.
+%   ahead_busy(+Ahead): the helper has requests to answer, once what
+%   it has told is taken.
 
 ahead_busy(Ahead) :-
     Ahead = ahead(helper(_, _, _, _)),
-    ahead_collect(Ahead, [timeout(0)]),
+    take_told(Ahead),
     Ahead = ahead(helper(_, _, _, Given)),
     Given > 0.
+
+take_told(Ahead) :-
+    Ahead = ahead(helper(_, _, Done, _)),
+    (   thread_peek_message(Done, _)
+    ->  ahead_collect(Ahead),
+        take_told(Ahead)
+    ;   true
+    ).
 
 %   ahead_drained(+Ahead): wait until the helper has answered every
 %   request it was given.
@@ -822,27 +839,24 @@ ahead_drained(Ahead) :-
 ahead_wait(Ahead, Max) :-
     (   Ahead = ahead(helper(_, _, _, Given)),
         Given >= Max
-    ->  ahead_collect(Ahead, []),
+    ->  ahead_collect(Ahead),
         ahead_wait(Ahead, Max)
     ;   true
     ).
 
-%   ahead_collect(+Ahead, +Options): take one message of the helper
-%   (waiting as thread_get_message/3's Options say); throws
-%   oro_ahead_ended(Why) if the helper stopped and the connection must
-%   end.
+%   ahead_collect(+Ahead): take the helper's next message, waiting for
+%   it; throws oro_ahead_ended(Why) if the helper stopped and the
+%   connection must end.
 
-ahead_collect(Ahead, Options) :-
+ahead_collect(Ahead) :-
     Ahead = ahead(Helper),
     Helper = helper(_, _, Done, Given),
-    (   thread_get_message(Done, Message, Options)
-    ->  (   Message == done
-        ->  Given1 is Given - 1,
-            nb_setarg(4, Helper, Given1)
-        ;   Message = ended(Why),
-            throw(oro_ahead_ended(Why))
-        )
-    ;   true
+    thread_get_message(Done, Message),
+    (   Message == done
+    ->  Given1 is Given - 1,
+        nb_setarg(4, Helper, Given1)
+    ;   Message = ended(Why),
+        throw(oro_ahead_ended(Why))
     ).
 
 %   ahead_helper(+Context, +Jobs, +Done): answer the requests sent on

@@ -215,6 +215,32 @@ test(helper_ends_with_connection, true(Used-Back == true-true)) :-
     used_ahead(Used),
     test_wait_until(test_server_connections(0), 10),
     test_bool(test_wait_until(thread_count(Before), 10), Back).
+test(at_most_two_wait_for_the_helper, true(Got == [p1, p2]-none-p3)) :-
+    % White box: a helper that answers nothing (its queues are the
+    % test's); the third request is given only once one is answered.
+    message_queue_create(Jobs),
+    message_queue_create(Done),
+    Ahead = ahead(helper(none, Jobs, Done, 0)),
+    call_cleanup(
+        ( oro_server:send_ahead(Ahead, p1),
+          oro_server:send_ahead(Ahead, p2),
+          thread_create(oro_server:send_ahead(Ahead, p3), Sender, []),
+          queued(Jobs, Given),
+          (   thread_get_message(Jobs, answer(Early), [timeout(0.2)])
+          ->  true
+          ;   Early = none
+          ),
+          thread_send_message(Done, done),
+          (   thread_get_message(Jobs, answer(Late), [timeout(10)])
+          ->  true
+          ;   Late = none
+          ),
+          thread_join(Sender, _),
+          Got = Given-Early-Late
+        ),
+        ( message_queue_destroy(Jobs),
+          message_queue_destroy(Done)
+        )).
 test(events_after_the_reply_that_caused_them,
      true(First-Oks-Events == ok-5-true)) :-
     test_ok(reset, []),
@@ -235,6 +261,14 @@ test(events_after_the_reply_that_caused_them,
     ).
 
 :- end_tests(ahead_server).
+
+%   queued(+Queue, -Ps): the answer(P) messages waiting on Queue, taken.
+
+queued(Queue, [P|Ps]) :-
+    thread_get_message(Queue, answer(P), [timeout(0)]),
+    !,
+    queued(Queue, Ps).
+queued(_, []).
 
 thread_count(N) :-
     aggregate_all(count, thread_property(_, status(running)), N).

@@ -333,12 +333,12 @@ after_write :-
 %   committed or not (see oro_reason's schema cache).
 
 store_write(Action, Goal) :-
-    flag(oro_schema_generation, Before, Before),
+    oro_schema_generation(Before),
     call_cleanup(oro_persist_transaction(Action, Goal),
                  schema_written(Before)).
 
 schema_written(Before) :-
-    (   flag(oro_schema_generation, After, After),
+    (   oro_schema_generation(After),
         After =\= Before
     ->  flag(oro_schema_generation, G, G+1)
     ;   true
