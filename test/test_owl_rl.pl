@@ -174,6 +174,14 @@ test(intersection_to_members, [ setup(rl_with(["meg rdf:type Mother"])),
                                                  'Woman', 'owl:Thing'])
                               ]) :-
     rl_types(meg, Classes).
+test(intersection_joined, [ setup(rl_with(["ann rdf:type Woman", "ann hasChild bob",
+                                           "zoe rdf:type Woman", "ann knows zoe",
+                                           "ann knows bob"])),
+                             true(Xs == [ann])
+                           ]) :-
+    test_find(myself, x, ["ann knows ?x", "?x rdf:type Mother"], Ys),
+    test_find(myself, x, ["?x hasChild bob", "?x rdf:type Mother"], Xs),
+    assertion(Ys == []).
 test(intersection_subclass, [setup(rl_store), nondet]) :-
     oro_subclass(myself, oro:'Mother', oro:'Woman').
 test(intersection_instances, [ setup(rl_with(["ann rdf:type Woman", "ann hasChild bob",

@@ -115,6 +115,15 @@ test(find_by_domain, [ setup(reasoning_testsuite),
                      ]) :-
     oro_add(myself, ["sheep eats grass"]),
     test_find(myself, animals, ["?animals rdf:type Animal"], Xs).
+test(join_checks_types_each_way,
+     [ setup(reasoning_testsuite),
+       true(Animals-Plants == [felix, sheep, snail]-[hay])
+     ]) :-
+    oro_add(myself, ["stone isAt rock", "snail isOn rock", "sheep isAt rock",
+                     "sheep eats hay", "hay isAt rock", "felix isAt rock",
+                     "felix rdf:type Monkey"]),
+    test_find(myself, a, ["?a isAt rock", "?a rdf:type Animal"], Animals),
+    test_find(myself, p, ["?p isAt rock", "?p rdf:type Plant"], Plants).
 test(datatype_range_types_nothing, [ setup(reasoning_testsuite),
                                      true(Classes == ['Animal', 'owl:Thing'])
                                    ]) :-

@@ -35,8 +35,10 @@ A SPARQL query is limited by an alarm of library(time)
 project's VM, two thread switches that cost a `check` over the socket
 more than the check itself.  A find of several patterns does without:
 oro_find_values/4 reads the clock after each solution of each pattern
-and stops past its deadline.  Between two readings it evaluates one
-pattern, which costs at most a scan; so it stops at most that late.
+that has a variable, and stops past its deadline.  Between two
+readings it evaluates one such pattern, which costs at most a scan,
+and checks of ground patterns, at most one per pattern; so it stops at
+most that late.
 */
 
 :- setting(time_limit, number, 5,
@@ -76,27 +78,33 @@ oro_solve(Model, Patterns) :-
     solve(Patterns, Model, none).
 
 %   solve(+Patterns, +Model, +Deadline): oro_solve/2, stopping past
-%   Deadline (see deadline/1).  The patterns' names are normalised once;
-%   what their variables are bound to comes from the store, normal
-%   already (oro_holds_normal/4).
+%   Deadline (see deadline/1).  The patterns' names are normalised once
+%   and the schema tables found once; what their variables are bound
+%   to comes from the store, normal already (oro_holds_keyed/5).  The
+%   clock is read after each solution of a pattern with a variable: a
+%   ground pattern is a check, whose cost is bounded.
 
 solve(Patterns0, Model, Deadline) :-
     maplist(normal_pattern, Patterns0, Patterns),
-    solve_normal(Patterns, Model, Deadline).
+    oro_shared_schema(Model, Key),
+    solve_normal(Patterns, Key, Model, Deadline).
 
 normal_pattern(rdf(S0, P0, O0), rdf(S, P, O)) :-
     oro_resource(S0, S),
     oro_resource(P0, P),
     oro_object(O0, O).
 
-solve_normal([], _, _) :-
+solve_normal([], _, _, _) :-
     !.
-solve_normal(Patterns, Model, Deadline) :-
+solve_normal(Patterns, Key, Model, Deadline) :-
     cheapest(Patterns, Pattern, Rest),
     Pattern = rdf(S, P, O),
-    oro_holds_normal(Model, S, P, O),
-    in_time(Deadline),
-    solve_normal(Rest, Model, Deadline).
+    (   ground(Pattern)
+    ->  oro_holds_keyed(Key, Model, S, P, O)
+    ;   oro_holds_keyed(Key, Model, S, P, O),
+        in_time(Deadline)
+    ),
+    solve_normal(Rest, Key, Model, Deadline).
 
 %   deadline(-Deadline): `none`, or deadline(Time, Limit) when the
 %   `time_limit` setting is Limit seconds from now.

@@ -1,6 +1,7 @@
 :- module(oro_reason,
           [ oro_holds/4,                % +Model, ?S, ?P, ?O
             oro_holds_normal/4,         % +Model, ?S, ?P, ?O
+            oro_holds_keyed/5,          % +Key, +Model, ?S, ?P, ?O
             oro_holds_bag/6,            % +Model, ?Template, ?S, ?P, ?O, -Bag
             oro_type/3,                 % +Model, ?X, ?Class
             oro_subclass/3,             % +Model, ?Sub, ?Super
@@ -167,7 +168,8 @@ unions) with 10k bottles: an inferred type 3.1 us, a hasValue edge
     s_entry/3,                      % Key, Class, Condition
     s_entry_class/2,                % Key, Class
     s_entry_sub/3,                  % Key, EntryClass, Super
-    s_has_entries/1.                % Key
+    s_has_entries/1,                % Key
+    s_implied/2.                    % Key, Class: typed by more than rdf:type
 
 		 /*******************************
 		 *            SCHEMA            *
@@ -317,7 +319,8 @@ retract_schema(Key) :-
     retractall(s_entry(Key, _, _)),
     retractall(s_entry_class(Key, _)),
     retractall(s_entry_sub(Key, _, _)),
-    retractall(s_has_entries(Key)).
+    retractall(s_has_entries(Key)),
+    retractall(s_implied(Key, _)).
 
 compile_schema(Model, Key) :-
     findall(C-Def, class_definition(Model, C, Def), Defs0),
@@ -327,7 +330,8 @@ compile_schema(Model, Key) :-
     compile_implications(Model, Key),
     compile_same_as(Model, Key),
     compile_axioms(Model, Key),
-    compile_rl(Model, Key, Defs).
+    compile_rl(Model, Key, Defs),
+    compile_implied(Key).
 
 schema_pairs(Model, P, Pairs) :-
     findall(S-O, oro_asserted(Model, S, P, O), Pairs0),
@@ -632,6 +636,18 @@ compile_implications(Model, Key) :-
            ->  assert_once(s_obj_implies(Key, Q, Super))
            ;   assert_once(s_subj_implies(Key, Q, Super))
            )).
+
+%   s_implied(Key, C): C has instances other than those of its asserted
+%   sub-classes, implied by a domain, a range or an entry class.  A
+%   type check against any other class looks at the asserted types
+%   alone.
+
+compile_implied(Key) :-
+    forall(( s_subj_implies(Key, _, C)
+           ; s_obj_implies(Key, _, C)
+           ; s_entry_sub(Key, _, C)
+           ),
+           assert_once(s_implied(Key, C))).
 
 %   owl:sameAs equivalence classes.
 
@@ -1052,9 +1068,19 @@ oro_holds(Model, S0, P0, O0) :-
 %   names are not normalised again at each step.
 
 oro_holds_normal(Model, S, P, O) :-
+    schema(Model, Key),
+    oro_holds_keyed(Key, Model, S, P, O).
+
+%!  oro_holds_keyed(+Key, +Model, ?S, ?P, ?O) is nondet.
+%
+%   As oro_holds_normal/4, with the schema tables Key of Model, as
+%   oro_shared_schema/2 gives them.  For a caller that evaluates many
+%   patterns in one go (a join), which finds the tables once.
+
+oro_holds_keyed(Key, Model, S, P, O) :-
     (   ground(S-P-O)
-    ->  holds_ground(Model, S, P, O)
-    ;   derivations(Model, S-P-O, S, P, O, Triples0),
+    ->  holds_ground(Key, Model, S, P, O)
+    ;   derivations(Key, Model, S-P-O, S, P, O, Triples0),
         sort(Triples0, Triples),
         member(S-P-O, Triples)
     ).
@@ -1069,21 +1095,27 @@ oro_holds_normal(Model, S, P, O) :-
 %   that sorts what it keeps of them anyway (a find of one pattern).
 
 oro_holds_bag(Model, Template, S, P, O, Bag) :-
+    schema(Model, Key),
     (   ground(S-P-O)
-    ->  findall(Template, holds_ground(Model, S, P, O), Bag)
-    ;   derivations(Model, Template, S, P, O, Bag)
+    ->  findall(Template, holds_ground(Key, Model, S, P, O), Bag)
+    ;   derivations(Key, Model, Template, S, P, O, Bag)
     ).
 
-holds_ground(Model, S, P, O) :-
-    schema(Model, Key),
-    holds(Key, Model, anc(0, []), S, P, O),
+%   holds_ground(+Key, +Model, +S, +P, +O): a check.  A type check, the
+%   most frequent in joins, goes to has_type/5 at once.
+
+holds_ground(Key, Model, S, P, O) :-
+    rdf_equal(rdf:type, Type),
+    (   P == Type
+    ->  has_type(Key, Model, anc(0, []), S, O)
+    ;   holds(Key, Model, anc(0, []), S, P, O)
+    ),
     !.
 
-%   derivations(+Model, ?Template, ?S, ?P, ?O, -Bag): Template for each
-%   derivation of S-P-O, but those whose predicate is a blank node.
+%   derivations(+Key, +Model, ?Template, ?S, ?P, ?O, -Bag): Template for
+%   each derivation of S-P-O, but those whose predicate is a blank node.
 
-derivations(Model, Template, S, P, O, Bag) :-
-    schema(Model, Key),
+derivations(Key, Model, Template, S, P, O, Bag) :-
     findall(Template,
             ( holds(Key, Model, anc(0, []), S, P, O),
               \+ rdf_is_bnode(P)
@@ -1477,17 +1509,23 @@ has_type(Key, Model, _, X, C) :-
     !,
     same(Key, X, X1),
     individual_key(Key, Model, X1).
-has_type(Key, Model, _, X, C) :-
+has_type(Key, Model, Anc, X, C) :-
     rdf_equal(rdf:type, Type),
-    same(Key, X, X1),
-    (   oro_asserted(Model, X1, Type, D),
+    (   same(Key, X, X1),
+        oro_asserted(Model, X1, Type, D),
         sub_class_of(Key, D, C)
-    ;   s_subj_implies(Key, Q, C),
+    ;   s_implied(Key, C),
+        implied_type(Key, Model, Anc, X, C)
+    ).
+
+implied_type(Key, Model, _, X, C) :-
+    same(Key, X, X1),
+    (   s_subj_implies(Key, Q, C),
         oro_asserted(Model, X1, Q, _)
     ;   s_obj_implies(Key, Q, C),
         oro_asserted(Model, _, Q, X1)
     ).
-has_type(Key, Model, Anc, X, C) :-
+implied_type(Key, Model, Anc, X, C) :-
     s_entry_sub(Key, D, C),
     entry_member(Key, Model, Anc, X, D).
 
