@@ -94,9 +94,7 @@ oro_prepare(Method, Params, Prepared) :-
     ).
 
 prepare(Method, Params, prepared(Impl, Name, Args)) :-
-    method_for(Method, Params, Sig, Impl, Name),
-    Sig =.. [_|Types],
-    decode_params(Types, Params, Method, Args0),
+    decoded(Method, Params, Sig, Impl, Name, Args0),
     (   statements_param(Sig, N)
     ->  parse_ahead(N, Args0, Args)
     ;   Args = Args0
@@ -131,10 +129,17 @@ reply(Goal, Value, Reply) :-
     ).
 
 dispatch(Context, Method, Params, Value) :-
+    decoded(Method, Params, _, Impl, Name, Args),
+    call_method(Impl, Name, Context, Args, Value).
+
+%   decoded(+Method, +Params, -Sig, -Impl, -Name, -Args): the method
+%   called Method (method_for/5) and its parameters decoded as its
+%   signature Sig declares them.
+
+decoded(Method, Params, Sig, Impl, Name, Args) :-
     method_for(Method, Params, Sig, Impl, Name),
     Sig =.. [_|Types],
-    decode_params(Types, Params, Method, Args),
-    call_method(Impl, Name, Context, Args, Value).
+    decode_params(Types, Params, Method, Args).
 
 %   method_for(+Method, +Params, -Sig, -Impl, -Name): the method called
 %   Method with as many parameters as Params: its declared signature,

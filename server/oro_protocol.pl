@@ -175,8 +175,9 @@ oro_read_request(oro_reader(In, Limit, Mode, State0), Request,
 %
 %   True if more input is there for Reader right now: bytes it has read
 %   but not returned yet, bytes waiting on its stream, or the end of
-%   its input.  Does not block.  (The server prepares the next request of a client that
-%   sends them back to back while it answers the previous one.)
+%   its input.  Does not block.  (The server prepares the next request
+%   of a client that sends them back to back while it answers the
+%   previous one.)
 
 oro_reader_pending(oro_reader(In, _, _, state(_, _, Tokens))) :-
     (   Tokens \== []
