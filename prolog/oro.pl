@@ -100,7 +100,7 @@
 :- use_module(oro/oro_consistency).
 :- use_module(oro/oro_explain).
 :- use_module(oro/oro_categorize).
-:- use_module(oro/oro_sparql).
+:- use_module(oro/oro_sparql_engine).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

@@ -1,4 +1,4 @@
-:- module(oro_sparql,
+:- module(oro_sparql_engine,
           [ oro_sparql_parse/2,         % +Text, -Query
             oro_sparql/3,               % +Model, +Text, -Result
             oro_sparql_json/3,          % +Model, +Text, -JSON
