@@ -67,6 +67,7 @@
             oro_sparql_parse/2,         % +Text, -Query
             oro_query_values/4,         % +Model, +Key, +Text, -Values
             oro_find/5,                 % +Model, +Var, +Patterns, +Filters, -Values
+            oro_sparql_load/0,
             % consistency
             oro_consistent/1,           % +Model
             oro_conflict/2,             % +Model, -Conflict
@@ -100,7 +101,7 @@
 :- use_module(oro/oro_consistency).
 :- use_module(oro/oro_explain).
 :- use_module(oro/oro_categorize).
-:- use_module(oro/oro_sparql_engine).
+:- use_module(oro/oro_sparql).
 :- use_module(oro/oro_reason).
 :- use_module(oro/oro_query).
 :- use_module(oro/oro_taxonomy).

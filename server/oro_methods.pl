@@ -731,7 +731,7 @@ find_filtered(Model, Var, Patterns, [], Values) :-
     !,
     find_values(Model, Var, Patterns, Values).
 find_filtered(Model, Var, Patterns, Filters, list(Texts)) :-
-    oro_sparql_engine:oro_find(Model, Var, Patterns, Filters, Values),
+    oro_find(Model, Var, Patterns, Filters, Values),
     maplist(term_string_value, Values, Texts).
 
 find_values(Model, Var, Patterns, list(Texts)) :-

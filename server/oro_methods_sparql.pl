@@ -1,7 +1,7 @@
 :- module(oro_methods_sparql, []).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
-:- use_module('../prolog/oro/oro_sparql_engine').
+:- use_module('../prolog/oro/oro_sparql').
 :- use_module('../prolog/oro/oro_names').
 
 /** <module> ORO methods: SPARQL

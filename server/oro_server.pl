@@ -145,6 +145,7 @@ main :-
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
+    oro_sparql_load,                    % main is idle from here on: see oro_sparql
     thread_get_message(oro_server_stop),
     oro_server_shutdown(Server),
     halt(0).

@@ -27,11 +27,15 @@ cli_run(Args, Code, Output) :-
         ( close(Out), close(Err) )),
     string_concat(O, E, Output).
 
-hello(Port, Reply) :-
+%   request(+Port, +Lines, -Reply): send one request (the method and
+%   its parameters, a line each) and read its three-line reply.
+
+request(Port, Lines, Reply) :-
     setup_call_cleanup(
         tcp_connect('127.0.0.1':Port, Pair, []),
         ( stream_pair(Pair, In, Out),
-          format(Out, "hello~n#end#~n", []),
+          forall(member(Line, Lines), format(Out, "~w~n", [Line])),
+          format(Out, "#end#~n", []),
           flush_output(Out),
           read_line_to_string(In, Status),
           read_line_to_string(In, Value),
@@ -60,23 +64,39 @@ test(bad_port, [true(Code \== 0)]) :-
 test(bad_rebuild_garbage, [true(Code \== 0)]) :-
     cli_run(['--rebuild-garbage=-5'], Code, _).
 test(rebuild_garbage, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
-    test_cli_server(['--rebuild-garbage=0'], Port, hello(Port, Reply), _).
+    test_cli_server(['--rebuild-garbage=0'], Port,
+                    request(Port, [hello], Reply), _).
 test(missing_ontology, [true(Code \== 0)]) :-
     cli_run(['--ontology=/nonexistent/x.owl'], Code, _).
 test(listening_default_ontology, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
-    test_cli_server([], Port, hello(Port, Reply), _).
+    test_cli_server([], Port, request(Port, [hello], Reply), _).
+
+%   The server loads the SPARQL engine once it listens (see oro_sparql):
+%   a query sent at once is answered, after that load if it is still
+%   running.
+
+test(query_right_after_listening,
+     [true(Reply == ["ok", "[\"Cup\"]", "#end#"])]) :-
+    test_cli_server([], Port,
+                    request(Port,
+                            [ query, x,
+                              "SELECT ?x WHERE { ?x rdfs:subClassOf oro:Cup }"
+                            ],
+                            Reply),
+                    _).
 test(no_commonsense_and_robot_id, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
     test_checkout_path('test/fixtures/testsuite.ttl', Fixture),
     atom_concat('--ontology=', Fixture, Opt),
     test_cli_server(['--no-commonsense', Opt, '--robot-id=ROBOT',
                      '--time-base=100'],
-                    Port, hello(Port, Reply), _).
+                    Port, request(Port, [hello], Reply), _).
 test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
     (   shared_ontology('oro.owl', ORO),
         shared_ontology('testsuite.oro.owl', TS)
     ->  atom_concat('--ontology=', ORO, O1),
         atom_concat('--ontology=', TS, O2),
-        test_cli_server([O1, O2], Port, hello(Port, Reply), Stderr)
+        test_cli_server([O1, O2], Port,
+                        request(Port, [hello], Reply), Stderr)
     ;   format(user_error, "~NNotice: ../shared/ontologies absent: \c
                             skipping the public ontologies test~n", []),
         Stderr = "",
@@ -91,11 +111,12 @@ test(public_ontologies_load_silently, [true(Stderr-Reply == ""-["ok", "\"oro-ser
 test(exposed_host_warns,
      [true(Reply-Warned == ["ok", "\"oro-server 0.8.2\"", "#end#"]-true)]) :-
     test_cli_server(['--host=0.0.0.0', '--no-commonsense'], Port,
-                    hello(Port, Reply), Stderr),
+                    request(Port, [hello], Reply), Stderr),
     test_bool(sub_string(Stderr, _, _, _, "no authentication"), Warned).
 test(loopback_does_not_warn,
      [true(Reply-Warned == ["ok", "\"oro-server 0.8.2\"", "#end#"]-false)]) :-
-    test_cli_server(['--no-commonsense'], Port, hello(Port, Reply), Stderr),
+    test_cli_server(['--no-commonsense'], Port,
+                    request(Port, [hello], Reply), Stderr),
     test_bool(sub_string(Stderr, _, _, _, "authentication"), Warned).
 
 %   --save-dir=DIR: save("x.owl") writes DIR/x.owl; a path going up out

@@ -7,7 +7,7 @@
 :- use_module(library(http/json)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_sparql_engine)).
+:- use_module(library(oro/oro_sparql)).
 
 /*  Tests of oro's SPARQL engine (prolog/oro/oro_sparql_engine.pl) and of the
     query, find and sparql methods (server/oro_methods_sparql.pl):
@@ -669,3 +669,36 @@ test(time_limit_while_others_served, true(Outcome == [fast, limited])) :-
           set_setting(oro_query:time_limit, 5)
         )).
 :- end_tests(sparql_socket).
+
+		 /*******************************
+		 *         LOADED ON USE        *
+		 *******************************/
+
+%   The engine is loaded by the first call that needs it, not with
+%   library(oro).  This process has it loaded already, so the fixture
+%   test/fixtures/sparql_on_use.pl runs in a child process: a find
+%   without filters leaves the engine unloaded, four threads making the
+%   first query at once all get its answer, and a filtered find works.
+
+sq_child(Fixture, Term) :-
+    test_checkout_path(prolog, Lib),
+    test_checkout_path(Fixture, File),
+    atom_concat('library=', Lib, LibOption),
+    setup_call_cleanup(
+        process_create(path(timeout), ['60', swipl, '-p', LibOption, File],
+                       [stdout(pipe(Out)), process(Pid)]),
+        ( read_term(Out, Term, []),
+          process_wait(Pid, Status)
+        ),
+        close(Out)),
+    assertion(Status == exit(0)).
+
+:- begin_tests(sparql_loaded_on_use).
+
+test(first_use_loads_engine,
+     true(Got == on_use(absent, absent,
+                        [1-[Cup], 2-[Cup], 3-[Cup], 4-[Cup]], [Cup]))) :-
+    Cup = 'http://kb.openrobots.org#Cup',
+    sq_child('test/fixtures/sparql_on_use.pl', Got).
+
+:- end_tests(sparql_loaded_on_use).

@@ -34,7 +34,8 @@ ORO clients send SPARQL: query(key, sparql) and the filters of find
 of the query language (a tokenizer and a DCG following the productions
 of the W3C SPARQL 1.1 grammar) producing a SPARQL algebra term, and an
 evaluator of that algebra over oro_holds/4, the inference closure of a
-model -- what find and check see.
+model -- what find and check see.  Its API is the module oro_sparql,
+which loads it on first use.
 
     ?- oro_sparql(myself,
                   "SELECT ?x ?w WHERE { ?x a oro:Monkey ; oro:weight ?w }
@@ -136,21 +137,7 @@ character offset in the query text.
 
 %!  oro_sparql_parse(+Text, -Query) is det.
 %
-%   Parse the SPARQL query Text (an atom or string) into Query, a SPARQL
-%   algebra term:
-%
-%     - select(Projection, Distinct, Pattern, Modifiers), Projection a
-%       list of var(Name) and as(Expression, Name), Distinct one of
-%       `all`, `distinct` or `reduced`;
-%     - ask(Pattern, Modifiers).
-%
-%   Pattern is built from bgp(Triples), join/2, left_join/3, union/2,
-%   minus/2, filter/2, extend/3, values/2 and subselect/1; variables
-%   are var(Name), Name an atom without `?`; IRIs and literals are
-%   rdf_db terms.
-%
-%   @error syntax_error(oro_sparql(Message, Position)) if Text is not a
-%          query this engine understands.
+%   The engine of oro_sparql:oro_sparql_parse/2, documented there.
 
 oro_sparql_parse(Text, Query) :-
     must_be(text, Text),
@@ -158,18 +145,7 @@ oro_sparql_parse(Text, Query) :-
 
 %!  oro_sparql(+Model, +Text, -Result) is det.
 %
-%   Run the SPARQL query Text over the inference closure of Model.
-%   Result is select(Vars, Rows) for a SELECT query, Vars the projected
-%   variable names (atoms) and Rows a list of rows, each a list of
-%   Var-Value pairs in the order of Vars, for the variables bound in
-%   that row (Value an IRI, a blank node or an rdf_db literal term); or
-%   ask(Bool) for an ASK query.
-%
-%   @error existence_error(agent, Model) for an unknown model.
-%   @error syntax_error(oro_sparql(Message, Position)) for a malformed
-%          query.
-%   @error resource_error(oro_query_time_limit(Seconds)) if the query
-%          runs longer than the `time_limit` setting.
+%   The engine of oro_sparql:oro_sparql/3, documented there.
 
 oro_sparql(Model0, Text, Result) :-
     oro_resolve_model(Model0, Model),
@@ -179,8 +155,7 @@ oro_sparql(Model0, Text, Result) :-
 
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %
-%   As oro_sparql/3, with the result as a string in the SPARQL 1.1
-%   Query Results JSON Format, on one line.
+%   The engine of oro_sparql:oro_sparql_json/3, documented there.
 
 oro_sparql_json(Model, Text, JSON) :-
     oro_sparql(Model, Text, Result),
@@ -188,14 +163,7 @@ oro_sparql_json(Model, Text, JSON) :-
 
 %!  oro_query_values(+Model, +Key, +Text, -Values) is det.
 %
-%   Values is the ordered set of the values of the variable Key (`x`
-%   or `?x`) over the results of the SELECT query Text, as ORO's
-%   query(key, sparql) answers them: rows where Key is unbound and
-%   blank nodes are left out; literals are kept.  A Key the query does
-%   not project gives `[]`.
-%
-%   @error syntax_error(oro_sparql(Message, Position)) also for an ASK
-%          query.
+%   The engine of oro_sparql:oro_query_values/4, documented there.
 
 oro_query_values(Model0, Key, Text, Values) :-
     oro_resolve_model(Model0, Model),
@@ -224,18 +192,7 @@ key_name(Key, Name) :-
 
 %!  oro_find(+Model, +Var, +Patterns, +Filters, -Values) is det.
 %
-%   As oro_find/4 (ORO statement patterns, sharing their variables),
-%   keeping only the solutions where every SPARQL expression of Filters
-%   (texts such as `"?w >= 48"` or `"regex(?l, 'king')"`, ANDed) is
-%   true.  Names in filters are not expanded: write `oro:x`, `:x` or a
-%   full IRI.  Var is a variable name (`o` or `?o`), or, with term
-%   patterns, a Prolog variable of Patterns.  As in ORO, no pattern
-%   gives `[]` whatever the filters.
-%
-%   @error domain_error(oro_variable, '') for an empty variable name.
-%   @error syntax_error(oro_sparql(Message, Position)) for a malformed
-%          filter (Position is in that filter's text).
-%   @error resource_error(oro_query_time_limit(Seconds)) as oro_sparql/3.
+%   The engine of oro_sparql:oro_find/5, documented there.
 
 oro_find(Model0, Var, Patterns, Filters, Values) :-
     oro_resolve_model(Model0, Model),
