@@ -10,7 +10,10 @@
             oro_persist_sizes/1         % -Sizes
           ]).
 :- use_module(library(semweb/rdf_db)).
-:- use_module(library(semweb/rdf_persistency)).
+:- autoload(library(semweb/rdf_persistency),
+            [ rdf_attach_db/2, rdf_detach_db/0, rdf_flush_journals/1,
+              rdf_journal_file/2, rdf_persistency/2, rdf_snapshot_file/2
+            ]).
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
