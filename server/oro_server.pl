@@ -11,6 +11,8 @@
 :- use_module(library(error)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
+:- use_module(library(apply), [include/3]).
+:- use_module(library(lists), [delete/3]).
 :- use_module('../prolog/oro').
 :- use_module(oro_protocol).
 :- use_module(oro_methods).
@@ -175,7 +177,13 @@ shutdown_signal(_Signal) :-
 
 %   threads_settled: every thread but main and SWI-Prolog's gc thread
 %   (which blocks all signals) has run a goal sent by thread_signal/2,
-%   so it runs Prolog and takes signals; 5 s at most for each.
+%   so it runs Prolog and takes signals; 5 s at most in all.  A thread
+%   that begins to wait on a message queue just as the signal comes
+%   notices it only at its next periodic check, 250 ms later (1 start
+%   in 20 waited that long for the spare workers): the threads that
+%   have not answered within 20 ms are signalled again, which wakes
+%   them.  A thread may then answer twice; the answers go to a queue of
+%   their own, destroyed at the end, where a late one is dropped.
 
 threads_settled :-
     findall(Thread,
@@ -183,13 +191,41 @@ threads_settled :-
               \+ memberchk(Thread, [main, gc])
             ),
             Threads),
+    message_queue_create(Queue),
+    call_cleanup(settle(Threads, Queue, 250),
+                 message_queue_destroy(Queue)).
+
+settle([], _, _) :-
+    !.
+settle(_, _, 0) :-
+    !.
+settle(Threads0, Queue, Rounds) :-
+    include(running, Threads0, Threads),
     forall(member(Thread, Threads),
-           catch(thread_signal(Thread,
-                               thread_send_message(main, settled(Thread))),
-                 _, true)),
-    forall(member(Thread, Threads),
-           ignore(thread_get_message(main, settled(Thread),
-                                     [timeout(5)]))).
+           catch(thread_signal(Thread, settled(Queue, Thread)), _, true)),
+    get_time(Now),
+    Deadline is Now + 0.02,
+    answered(Queue, Deadline, Threads, Left),
+    Rounds1 is Rounds - 1,
+    settle(Left, Queue, Rounds1).
+
+running(Thread) :-
+    catch(thread_property(Thread, status(running)), _, fail).
+
+settled(Queue, Thread) :-
+    catch(thread_send_message(Queue, settled(Thread)), _, true).
+
+%   answered(+Queue, +Deadline, +Threads, -Left): Left are the Threads
+%   that did not answer before Deadline.
+
+answered(_, _, [], []) :-
+    !.
+answered(Queue, Deadline, Threads, Left) :-
+    (   thread_get_message(Queue, settled(Thread), [deadline(Deadline)])
+    ->  delete(Threads, Thread, Threads1),
+        answered(Queue, Deadline, Threads1, Left)
+    ;   Left = Threads
+    ).
 
 loopback(Host) :-
     memberchk(Host, ['127.0.0.1', localhost, '::1']).
