@@ -17,16 +17,16 @@ re-exported by library(oro).  The engine that runs them, the module
 documentation says what it supports and how it evaluates), is loaded
 by the first call of one of them, not with this module: it is a fifth
 of oro's code and, with the regular expressions and dates its filters
-need, about a sixth of the time a server takes to start.  A robot that
-never sends a query does not wait for it; oro_sparql_load/0 loads it
-ahead, as the server does once it listens.
+need, about a sixth of the time a server takes to load its code.  A
+robot that never sends a query does not wait for it; oro_sparql_load/0
+loads it ahead, as the server does once it listens.
 */
 
 %!  oro_sparql_load is det.
 %
 %   Load the SPARQL engine if it is not loaded yet.  The predicates of
 %   this module call it first; call it ahead to spare the first query
-%   the load (about a tenth of a second).  Safe in any thread: a thread
+%   the load (50-80 ms on a 2-core VM).  Safe in any thread: a thread
 %   calling it while another loads the engine waits for that load to
 %   end.
 
