@@ -147,10 +147,18 @@ main :-
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
-    oro_sparql_load,                    % main is idle from here on: see oro_sparql
+    load_sparql_engine,
     thread_get_message(oro_server_stop),
     oro_server_shutdown(Server),
     halt(0).
+
+%   load_sparql_engine: main, idle once the server listens, loads the
+%   SPARQL engine (see oro_sparql), so that the first query rarely
+%   waits for it.  Should that load fail, the server goes on: each query
+%   then gets the error.
+
+load_sparql_engine :-
+    catch(oro_sparql_load, Error, print_message(warning, Error)).
 
 %   SIGTERM and SIGINT are handled by the main thread, which waits for
 %   this message: the shutdown itself runs outside the signal handler.
