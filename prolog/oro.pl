@@ -89,8 +89,7 @@
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text
-            oro_term_text/2,            % +Term, -Text
-            oro_term_string/2           % +Term, -String
+            oro_term_text/2             % +Term, -Text
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(oro/oro_names).

@@ -428,7 +428,7 @@ m_find(Var, Patterns, Values) :-
     find_values(myself, Var, Patterns, Values).
 
 term_string_value(Term, string(Text)) :-
-    oro_term_string(Term, Text).
+    oro_term_text(Term, Text).
 
 		 /*******************************
 		 *       LABELS, LOOKUP         *
@@ -464,7 +464,7 @@ lookup_pairs(Model, Text, list(Pairs)) :-
     maplist(match_pair, Matches, Pairs).
 
 match_pair(R-Kind, list([string(Id), string(Type)])) :-
-    oro_term_string(R, Id),
+    oro_iri_name(R, Id),
     upcase_atom(Kind, Type).
 
 m_lookup(Text, TypeText, list(Ids)) :-

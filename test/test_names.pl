@@ -235,27 +235,4 @@ test(plain, true(Text == babouin)) :-
 test(quotes_kept_inside, true(Text == 'say "hi"')) :-
     oro_term_text(literal(lang(en, 'say "hi"')), Text).
 
-
-%   oro_term_string/2 gives the text of oro_term_text/2, as a string.
-
-test(term_string_as_term_text, true(Strings == Texts)) :-
-    test_literal(xsd:int, '12', Int),
-    Terms = [ 'http://kb.openrobots.org#Monkey',
-              'http://kb.openrobots.org#a:b',
-              'http://kb.openrobots.org#',
-              'http://www.w3.org/2002/07/owl#Thing',
-              'http://x.org/a#b',
-              '_:b1',
-              Int,
-              literal(lang(en, 'baboon monkey')),
-              literal(babouin)
-            ],
-    maplist(oro_term_string, Terms, Strings),
-    maplist(term_text_string, Terms, Texts),
-    assertion(maplist(string, Strings)).
-
-term_text_string(Term, String) :-
-    oro_term_text(Term, Text),
-    atom_string(Text, String).
-
 :- end_tests(literal_text).

@@ -6,7 +6,6 @@
             oro_local_name/2,           % +IRI, -Local
             oro_literal_lexical/2,      % +Literal, -Lexical
             oro_term_text/2,            % +Term, -Text
-            oro_term_string/2,          % +Term, -String
             oro_term_local_text/2,      % +Term, -Text
             oro_term_light_text/2,      % +Term, -Text
             oro_resource/2,             % ?Term, -IRI
@@ -223,26 +222,6 @@ oro_term_text(literal(Value), Text) :-
     oro_literal_lexical(literal(Value), Text).
 oro_term_text(IRI, Text) :-
     oro_iri_name(IRI, Text).
-
-%!  oro_term_string(+Term, -String) is det.
-%
-%   As oro_term_text/2, the text a string.  A resource of the default
-%   namespace, the usual answer, is named without making an atom of its
-%   name (0.65 us against 0.9 us a name, and no atom left for the atom
-%   garbage collector once the reply is written): the server names the
-%   answers of find and lookup with it.
-
-oro_term_string(IRI, String) :-
-    atom(IRI),
-    oro_default_namespace(NS),
-    atom_length(NS, Length),
-    sub_atom(IRI, 0, Length, After, NS),
-    After > 0,
-    !,
-    sub_string(IRI, Length, After, 0, String).
-oro_term_string(Term, String) :-
-    oro_term_text(Term, Text),
-    text_to_string(Text, String).
 
 %!  oro_term_local_text(+Term, -Text) is det.
 %
