@@ -195,7 +195,7 @@ shutdown_signal(_Signal) :-
 
 threads_settled :-
     findall(Thread,
-            ( thread_property(Thread, status(running)),
+            ( running(Thread),
               \+ memberchk(Thread, [main, gc])
             ),
             Threads),

@@ -1,10 +1,4 @@
-:- module(oro_sparql_engine,
-          [ oro_sparql_parse/2,         % +Text, -Query
-            oro_sparql/3,               % +Model, +Text, -Result
-            oro_sparql_json/3,          % +Model, +Text, -JSON
-            oro_query_values/4,         % +Model, +Key, +Text, -Values
-            oro_find/5                  % +Model, +Var, +Patterns, +Filters, -Values
-          ]).
+:- module(oro_sparql_engine, []).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
 :- use_module(library(lists)).
@@ -35,7 +29,10 @@ of the query language (a tokenizer and a DCG following the productions
 of the W3C SPARQL 1.1 grammar) producing a SPARQL algebra term, and an
 evaluator of that algebra over oro_holds/4, the inference closure of a
 model -- what find and check see.  Its API is the module oro_sparql,
-which loads it on first use.
+which loads it on first use and calls its entry points (the PUBLIC API
+section below) module-qualified.  It exports nothing: the same names
+exported from here would clash with oro_sparql's wherever both modules
+are imported.
 
     ?- oro_sparql(myself,
                   "SELECT ?x ?w WHERE { ?x a oro:Monkey ; oro:weight ?w }
@@ -137,7 +134,7 @@ character offset in the query text.
 
 %!  oro_sparql_parse(+Text, -Query) is det.
 %
-%   The engine of oro_sparql:oro_sparql_parse/2, documented there.
+%   Called by oro_sparql:oro_sparql_parse/2, which documents it.
 
 oro_sparql_parse(Text, Query) :-
     must_be(text, Text),
@@ -145,7 +142,7 @@ oro_sparql_parse(Text, Query) :-
 
 %!  oro_sparql(+Model, +Text, -Result) is det.
 %
-%   The engine of oro_sparql:oro_sparql/3, documented there.
+%   Called by oro_sparql:oro_sparql/3, which documents it.
 
 oro_sparql(Model0, Text, Result) :-
     oro_resolve_model(Model0, Model),
@@ -155,7 +152,7 @@ oro_sparql(Model0, Text, Result) :-
 
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %
-%   The engine of oro_sparql:oro_sparql_json/3, documented there.
+%   Called by oro_sparql:oro_sparql_json/3, which documents it.
 
 oro_sparql_json(Model, Text, JSON) :-
     oro_sparql(Model, Text, Result),
@@ -163,7 +160,7 @@ oro_sparql_json(Model, Text, JSON) :-
 
 %!  oro_query_values(+Model, +Key, +Text, -Values) is det.
 %
-%   The engine of oro_sparql:oro_query_values/4, documented there.
+%   Called by oro_sparql:oro_query_values/4, which documents it.
 
 oro_query_values(Model0, Key, Text, Values) :-
     oro_resolve_model(Model0, Model),
@@ -192,7 +189,7 @@ key_name(Key, Name) :-
 
 %!  oro_find(+Model, +Var, +Patterns, +Filters, -Values) is det.
 %
-%   The engine of oro_sparql:oro_find/5, documented there.
+%   Called by oro_sparql:oro_find/5, which documents it.
 
 oro_find(Model0, Var, Patterns, Filters, Values) :-
     oro_resolve_model(Model0, Model),
