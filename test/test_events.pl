@@ -6,6 +6,7 @@
 :- use_module(library(pairs)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
+:- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
 :- use_module(library(oro/oro_store),
               [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,
                oro_graph/3]).
@@ -2795,3 +2796,59 @@ ev_counted(Base, N) :-
     ev_watcher_clauses(All),
     assertion(Flag == All),
     N is All - Base.
+
+                 /*******************************
+                 *     SCHEMA TABLES AHEAD      *
+                 *******************************/
+
+%   When idle, the watcher thread compiles the shared schema tables of
+%   the models that have none for the current schema generation, so the
+%   first query after a schema change (or on a new agent's model) does
+%   not.  The tables are observed with oro_compiled_schema/2, which
+%   never compiles; no query runs on the model meanwhile.  With the
+%   setting off, the same changes leave the tables to the first query
+%   (the control: nothing else compiles them).
+
+:- begin_tests(events_schema_ahead,
+               [ setup(ev_init_testsuite),
+                 cleanup(( set_setting(oro_events:warm_schemas, true),
+                           oro_reset
+                         ))
+               ]).
+
+test(after_schema_change, [ setup(ev_warm_reset(true)),
+                            true(Key1 \== Key0)
+                          ]) :-
+    ev_warm_key(myself, Key0),
+    oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
+    ev_warm_key(myself, Key1).
+test(new_agent_model, [ setup(ev_warm_reset(true)) ]) :-
+    oro_add(myself, ["gerard rdf:type Agent"]),
+    oro_agents(Agents),
+    assertion(memberchk(gerard, Agents)),
+    ev_warm_key(gerard, _),
+    ev_warm_key(myself, _).
+test(off_leaves_them_to_the_query, [ setup(ev_warm_reset(false)) ]) :-
+    oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
+    oro_events_sync,
+    assertion(\+ oro_compiled_schema(myself, _)),
+    assertion(oro_check(myself, ["thing_1 rdf:type Artifact"]) -> fail ; true),
+    assertion(oro_compiled_schema(myself, _)).
+
+:- end_tests(events_schema_ahead).
+
+%   ev_warm_reset(+Warm): a reset store with the setting warm_schemas
+%   Warm, once the watcher thread has done what the reset gave it.
+
+ev_warm_reset(Warm) :-
+    set_setting(oro_events:warm_schemas, Warm),
+    oro_reset,
+    oro_events_sync.
+
+%   ev_warm_key(+Model, -Key): Model's shared tables for the current
+%   generation, once the watcher thread has compiled them (10 s at
+%   most).
+
+ev_warm_key(Model, Key) :-
+    assertion(test_wait_until(oro_compiled_schema(Model, _), 10)),
+    oro_compiled_schema(Model, Key).

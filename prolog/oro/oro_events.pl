@@ -92,6 +92,15 @@ the number of watchers) and is given back as it is processed;
 oro_events_sync/0 waits for it.  (That a snapshot keeps every triple it
 may see relies on the store's GC pin: see oro_store.)
 
+When its queue is empty, the watcher thread compiles ahead the shared
+schema tables (oro_reason) of each model that has none for the
+current schema generation: `myself` at the start, an agent's model
+once it is created, every model again after a schema change.  Without
+this, the first query of a model after such a change compiled them
+itself (3-4 ms on the bench's world).  A message that arrives while
+the thread compiles waits for that one model, and a compilation that
+a schema change made stale is not retried before the next message.
+
 ## Incremental evaluation
 
 With 1,000 watchers a change must not cost 1,000 evaluations.  Each
@@ -150,6 +159,8 @@ one not evaluated yet, and too many seeds (more than 2,000).
     watcher thread, the schemas of the models it touches are compiled
     again, and every watcher of those models is evaluated in full.
     Slow; it exists to check the index.
+  - `oro_events:warm_schemas` (default `true`): `false` leaves the
+    schema tables to be compiled by the first query that needs them.
 
 The tests compare the three on random changes over a schema with
 sub-properties, inverses, symmetric and transitive properties, domains
@@ -163,6 +174,10 @@ and ranges.
            'Select the watchers a change may affect by their dependencies; \c
             false (a reference for tests) evaluates every watcher of the \c
             changed models in full at every change').
+:- setting(warm_schemas, boolean, true,
+           'The watcher thread, when idle, compiles the schema tables of \c
+            the models that have none for the current schema (false: the \c
+            first query of a model after a schema change compiles them)').
 
 :- dynamic
     watcher/5,                      % Id, Model, Registry, Spec, Query
@@ -1102,10 +1117,44 @@ watcher_start :-
 watcher_loop :-
     thread_get_message(oro_watcher_queue, Message),
     catch(( handle(Message),
-            collect_dropped
+            collect_dropped,
+            warm_while_idle
           ),
           E, handle_error(E)),
     watcher_loop.
+
+%   warm_while_idle: while no message waits, compile the shared schema
+%   tables of the models that have none for the current generation,
+%   one model at a time (`myself` first).  It stops when every model
+%   has them, and when a compilation did not give a model current
+%   tables (a schema change started meanwhile): the change's message
+%   will come and start it again, so a long schema-changing write is
+%   not met with compilation after compilation.  It reads the store
+%   through the rebuild gate, without waiting (oro_store_try_read/1):
+%   a store rebuild must not reset rdf_db under it, and ends with a
+%   schema change anyway.
+
+warm_while_idle :-
+    (   setting(warm_schemas, true),
+        \+ thread_peek_message(oro_watcher_queue, _),
+        cold_model(Model)
+    ->  (   oro_store_try_read(oro_shared_schema(Model, _)),
+            oro_compiled_schema(Model, _)
+        ->  debug(oro(events), 'Schema tables of ~q compiled ahead', [Model]),
+            warm_while_idle
+        ;   true
+        )
+    ;   true
+    ).
+
+cold_model(Model) :-
+    (   Model = myself
+    ;   oro_model(Model),
+        Model \== myself
+    ),
+    oro_model(Model),
+    \+ oro_compiled_schema(Model, _),
+    !.
 
 %   How many watchers there are is counted (the flag
 %   oro_events_watchers) by this thread, which alone asserts and
@@ -1158,8 +1207,8 @@ handle(change(Snapshot, Touched, Schema, Delta)) :-
                    )
                  )),
     run_direct_deliveries.
-handle(warm(Model)) :-
-    oro_shared_schema(Model, _).        % compiled unless already done
+handle(warm(Model)) :-                 % compiled unless already done
+    ignore(oro_store_try_read(oro_shared_schema(Model, _))).
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
     ->  Result = Result0

@@ -27,6 +27,7 @@
             oro_store_read/1,           % :Goal
             oro_store_rebuild/0,
             oro_store_gate_exempt/0,
+            oro_store_try_read/1,       % :Goal
             oro_drain_queue/2           % +Queue, -Messages
           ]).
 :- use_module(library(semweb/rdf_db)).
@@ -41,7 +42,8 @@
 
 :- meta_predicate
     oro_store_write(+, 0),
-    oro_store_read(0).
+    oro_store_read(0),
+    oro_store_try_read(0).
 
 /** <module> The store: graphs, models and asserted triples
 
@@ -729,6 +731,9 @@ to leave, rebuilds, and opens it again.  Every write goes through the
 gate (oro_store_write/2), and so does every request of the server.  The
 watcher thread reads only snapshots of committed changes: a rebuild
 waits until it has processed them all (rebuild_hook(blocked(_))).
+What it reads outside a change (schema tables compiled ahead) goes
+through the gate with oro_store_try_read/1, which does not wait: it is
+left for later while a rebuild is due.
 
 Rebuilds are off unless the setting rebuild_garbage is set (the server
 sets it): a program that reads the store from several threads outside
@@ -773,6 +778,28 @@ oro_store_read(Goal) :-
         rebuild_if_due
     ).
 
+%!  oro_store_try_read(:Goal) is semidet.
+%
+%   As oro_store_read/1, but if a rebuild is in progress or waiting
+%   for the readers, fail at once instead of waiting; and never run a
+%   rebuild.  The calling thread is counted in even if it passes a
+%   closed gate otherwise (oro_store_gate_exempt/0): for work in the
+%   background that reads rdf_db and can be left for later, such as the
+%   watcher thread compiling schema tables ahead.
+
+oro_store_try_read(Goal) :-
+    must_be(callable, Goal),
+    (   nb_current(oro_store_reader, true)
+    ->  once(Goal)
+    ;   setup_call_cleanup(gate_count(1, Rebuilding),
+                           open_gate_goal(Rebuilding, Goal),
+                           leave_gate)
+    ).
+
+open_gate_goal(0, Goal) :-
+    nb_setval(oro_store_reader, true),
+    once(Goal).
+
 %   The reader counts itself in and looks for a rebuild; the rebuild
 %   marks itself, then counts the readers: one of them sees the other.
 
@@ -795,7 +822,8 @@ leave_gate :-
 %   in the gate and read the rebuild's mark, under the mutex
 %   oro_store_gate, which the rebuild holds to set its mark
 %   (set_rebuilding/1): a reader and a rebuild are ordered by it.
-%   Called only by the setup and cleanup of oro_store_read/1, where
+%   Called only by the setup and cleanup of oro_store_read/1 and
+%   oro_store_try_read/1, where
 %   signals wait, so the mutex is always unlocked.  (Not flag/3, which
 %   meta-calls update_flag/3 under a global mutex on every update.)
 
