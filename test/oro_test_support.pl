@@ -2,6 +2,7 @@
           [ test_path/2,                % +Relative, -Path
             test_fixture/2,             % +File, -Path
             test_checkout_path/2,       % +Relative, -Path
+            test_child_term/2,          % +Fixture, -Term
             test_store_testsuite/0,
             test_find/4,                % +Model, +Var, +Patterns, -Names
             test_names/2,               % +IRIs, -Names
@@ -134,6 +135,28 @@ test_checkout_path(Relative, Path) :-
     test_dir(Dir),
     atomic_list_concat([Dir, '/../', Relative], Path0),
     absolute_file_name(Path0, Path).
+
+%!  test_child_term(+Fixture, -Term) is det.
+%
+%   Run the script Fixture (a path relative to the checkout) in a child
+%   process, `swipl -p library=prolog Fixture` (60 s at most), and read
+%   the one term it writes on its standard output.  For what only a
+%   process that has not loaded everything the tests load can show
+%   (which libraries a program loads, a load that fails).  The child
+%   must exit with status 0.
+
+test_child_term(Fixture, Term) :-
+    test_checkout_path(prolog, Lib),
+    test_checkout_path(Fixture, File),
+    atom_concat('library=', Lib, LibOption),
+    setup_call_cleanup(
+        process_create(path(timeout), ['60', swipl, '-p', LibOption, File],
+                       [stdout(pipe(Out)), process(Pid)]),
+        ( read_term(Out, Term, []),
+          process_wait(Pid, Status)
+        ),
+        close(Out)),
+    assertion(Status == exit(0)).
 
 
                  /*******************************

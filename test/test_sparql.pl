@@ -680,25 +680,29 @@ test(time_limit_while_others_served, true(Outcome == [fast, limited])) :-
 %   without filters leaves the engine unloaded, four threads making the
 %   first query at once all get its answer, and a filtered find works.
 
-sq_child(Fixture, Term) :-
-    test_checkout_path(prolog, Lib),
-    test_checkout_path(Fixture, File),
-    atom_concat('library=', Lib, LibOption),
-    setup_call_cleanup(
-        process_create(path(timeout), ['60', swipl, '-p', LibOption, File],
-                       [stdout(pipe(Out)), process(Pid)]),
-        ( read_term(Out, Term, []),
-          process_wait(Pid, Status)
-        ),
-        close(Out)),
-    assertion(Status == exit(0)).
-
 :- begin_tests(sparql_loaded_on_use).
 
 test(first_use_loads_engine,
      true(Got == on_use(absent, absent,
                         [1-[Cup], 2-[Cup], 3-[Cup], 4-[Cup]], [Cup]))) :-
     Cup = 'http://kb.openrobots.org#Cup',
-    sq_child('test/fixtures/sparql_on_use.pl', Got).
+    test_child_term('test/fixtures/sparql_on_use.pl', Got).
 
 :- end_tests(sparql_loaded_on_use).
+
+%   When the engine cannot be loaded (the child process refuses its
+%   file), oro_sparql_load/0 and each query raise the load's error, a
+%   find without filters still answers, the server's load after
+%   listening only warns, a query over the protocol gets an error
+%   reply, and a query made once loading works again loads the engine.
+
+:- begin_tests(sparql_engine_unloadable).
+
+test(load_refused,
+     true(Got = unloadable(permission_error(load, source_sink, _),
+                           permission_error(load, source_sink, _),
+                           [Cup], warned(true), error(_), [Cup]))) :-
+    Cup = 'http://kb.openrobots.org#Cup',
+    test_child_term('test/fixtures/sparql_unloadable.pl', Got).
+
+:- end_tests(sparql_engine_unloadable).
