@@ -24,7 +24,9 @@
       - SIGTERM and SIGINT stop the server cleanly (exit 0, everything
         kept); a request in progress when SIGTERM comes is finished and
         answered, and no new connection is accepted meanwhile;
-      - journals are compacted under a stream of updates.
+      - journals are compacted under a stream of updates;
+      - library(semweb/rdf_persistency) is loaded only when a database
+        directory is given (it is 15 ms of a server's start).
 
     Run: cd /work/main && swipl -g run_tests -t halt test/test_durability.pl
 */
@@ -61,6 +63,17 @@ durability_cleanup(Dir) :-
 durability_names(Model, Var, Patterns, Names) :-
     test_find(Model, Var, Patterns, Names0),
     msort(Names0, Names).
+
+%   This process has loaded rdf_persistency: the fixture runs in a
+%   child process.
+
+:- begin_tests(durability_loaded_on_use).
+
+test(persistency_with_a_directory_only,
+     true(Got == persistency(absent, loaded))) :-
+    test_child_term('test/fixtures/persistency_on_use.pl', Got).
+
+:- end_tests(durability_loaded_on_use).
 
 :- begin_tests(durability_restore).
 
