@@ -862,11 +862,17 @@ extra_statement(W, I, S) :-
     furniture_of(W, I, F),
     format(string(S), "extra~d isOn furniture~d", [I, F]).
 
-bulk_batch(W, Prefix, I, Batch) :-
+%   bulk_batch(+World, +Prefix, +I, -Batch): the 100 statements of
+%   sample I of the adds of 100, each object on one of 100 shelves of
+%   their own (shelfK), which no find asks about.  (They were put on
+%   the world's furniture 1..100, which the 610 batches of the two adds
+%   of 100 left with some 626 objects each instead of 16: the finds
+%   measured after them that asked about it, 9% of their samples, had
+%   that many answers, and made the finds' p99.)
+
+bulk_batch(_, Prefix, I, Batch) :-
     findall(S, ( between(1, 100, K),
-                 furniture_of(W, K, F),
-                 format(string(S), "~w~d_~d isOn furniture~d",
-                        [Prefix, I, K, F])
+                 format(string(S), "~w~d_~d isOn shelf~d", [Prefix, I, K, K])
                ), Batch).
 
 %   sample_object(+World, +I, -J): the object of sample I, spread over
