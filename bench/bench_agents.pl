@@ -30,9 +30,18 @@
       once.  The lifetime (10 time units) must be longer than
       `spread-seconds`.
 
+    - the first query after a schema change (in process, `facts`
+      triples of bench_world/2 and 10 agents): after each of
+      `samples`/10 schema changes (a new sub-class of Artifact), one
+      find on each model; with the setting oro_events:warm_schemas
+      off, that query compiles the model's schema tables; on, the
+      watcher thread has compiled them ahead (the rows wait until it
+      has, then time the query).
+
     --case=all (default), agents (addForAgent and memory per agent),
-    forget (facts added at once) or spread (spread-out deadlines) runs
-    only those figures.
+    forget (facts added at once), spread (spread-out deadlines) or
+    schema (the first query after a schema change) runs only those
+    figures.
 
     The agent figures over the socket come from the real server
     (server/oro_server.pl --port=0) started as a child process; the
@@ -48,6 +57,10 @@
 
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_memory), [oro_memory_sync/0]).
+:- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
+:- use_module(library(oro/oro_store), [oro_model/1]).
+:- use_module(library(settings)).
+:- use_module(library(yall)).
 :- use_module(oro_bench('../server/oro_server')).
 :- use_module(library(readutil)).
 :- use_module(library(option)).
@@ -68,7 +81,7 @@ opt_type(checkers, checkers, nonneg).
 opt_type(spread_facts, spread_facts, nonneg).
 opt_type(spread_seconds, spread_seconds, number).
 opt_type(spread_batch, spread_batch, nonneg).
-opt_type(case, case, oneof([all, agents, forget, spread])).
+opt_type(case, case, oneof([all, agents, forget, spread, schema])).
 
 main :-
     current_prolog_flag(argv, Argv),
@@ -94,6 +107,10 @@ main :-
     (   case(Case, spread)
     ->  bench_forgetting_spread(SpreadFacts, SpreadSeconds, SpreadBatch,
                                 TimeBase)
+    ;   true
+    ),
+    (   case(Case, schema)
+    ->  bench_first_query(Facts, Samples)
     ;   true
     ),
     oro_events_sync,
@@ -129,6 +146,73 @@ rss_kb(Pid, KB) :-
 
 self_pid(Pid) :-
     current_prolog_flag(pid, Pid).
+
+		 /*******************************
+		 *  FIRST QUERY, SCHEMA CHANGED *
+		 *******************************/
+
+%   bench_first_query(+Facts, +Samples): a store of Facts triples and
+%   10 agents; the time of the first find on each model after a schema
+%   change, with the schema tables left to that find (warm_schemas
+%   off) and compiled ahead by the watcher thread (on).
+
+bench_first_query(Facts, Samples) :-
+    format("~nFirst query of a model after a schema change (~D triples, \c
+            10 agents, in process)~n", [Facts]),
+    oro_init([]),
+    bench_world(Facts, Statements),
+    bench_batches(Statements, 1000, Batches),
+    forall(member(B, Batches), oro_add(myself, B)),
+    numlist(1, 10, Ks),
+    maplist([K, S]>>format(string(S), "agent~d rdf:type Human", [K]), Ks,
+            Agents),
+    oro_add(myself, Agents),
+    oro_agents(_),                          % the agents' models made
+    findall(M, oro_model(M), Models),
+    Changes is max(1, Samples // 10),
+    bench_header("triples"),
+    forall(member(Warm, [false, true]),
+           first_query_row(Warm, Facts, Models, Changes)),
+    set_setting(oro_events:warm_schemas, true),
+    oro_reset.
+
+first_query_row(Warm, Facts, Models, Changes) :-
+    set_setting(oro_events:warm_schemas, Warm),
+    findall(Micros,
+            ( between(1, Changes, I),
+              format(string(Change), "Gadget~w_~d rdfs:subClassOf Artifact",
+                     [Warm, I]),
+              oro_add(myself, [Change]),
+              oro_events_sync,
+              (   Warm == true
+              ->  forall(member(M, Models), warmed(M))
+              ;   true
+              ),
+              member(Model, Models),
+              bench_time(oro_find(Model, x, ["?x isOn furniture7"], _),
+                         Micros)
+            ),
+            Times),
+    format(atom(Name), "first find, warm_schemas ~w", [Warm]),
+    bench_report(Name, Facts, Times).
+
+%   warmed(+Model): the watcher thread has compiled Model's tables for
+%   the current schema (10 s at most).
+
+warmed(Model) :-
+    get_time(T0),
+    Deadline is T0 + 10,
+    warmed(Model, Deadline).
+
+warmed(Model, Deadline) :-
+    (   oro_compiled_schema(Model, _)
+    ->  true
+    ;   get_time(Now),
+        Now < Deadline
+    ->  sleep(0.001),
+        warmed(Model, Deadline)
+    ;   throw(bench_failed(warmed(Model)))
+    ).
 
 		 /*******************************
 		 *      addForAgent COST        *

@@ -1148,11 +1148,11 @@ warm_while_idle :-
     ).
 
 cold_model(Model) :-
-    (   Model = myself
+    (   Model = myself,
+        oro_model(myself)
     ;   oro_model(Model),
         Model \== myself
     ),
-    oro_model(Model),
     \+ oro_compiled_schema(Model, _),
     !.
 
