@@ -9,7 +9,7 @@
 :- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
 :- use_module(library(oro/oro_store),
               [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,
-               oro_graph/3]).
+               oro_graph/3, oro_load_ontology/1]).
 :- use_module(library(settings)).
 :- use_module(library(random)).
 :- use_module(library(aggregate)).
@@ -2804,7 +2804,8 @@ ev_counted(Base, N) :-
 %   When idle, the watcher thread compiles the shared schema tables of
 %   the models that have none for the current schema generation, so the
 %   first query after a schema change (or on a new agent's model) does
-%   not.  The tables are observed with oro_compiled_schema/2, which
+%   not; also after a change that sends no message of triples (a
+%   rolled-back write, an ontology loaded).  The tables are observed with oro_compiled_schema/2, which
 %   never compiles; no query runs on the model meanwhile.  With the
 %   setting off, the same changes leave the tables to the first query
 %   (the control: nothing else compiles them).
@@ -2828,6 +2829,25 @@ test(new_agent_model, [ setup(ev_warm_reset(true)) ]) :-
     assertion(memberchk(gerard, Agents)),
     ev_warm_key(gerard, _),
     ev_warm_key(myself, _).
+test(after_rolled_back_schema_write, [ setup(ev_warm_reset(true)),
+                                       true(Key1 \== Key0)
+                                     ]) :-
+    ev_warm_key(myself, Key0),
+    oro_statements(["Gadget rdfs:subClassOf Artifact"], Triples, _),
+    catch(oro_store_write(test(myself),
+                          ( oro_store_assert(myself, Triples, longterm),
+                            throw(ev_rolled_back)
+                          )),
+          ev_rolled_back, true),
+    ev_warm_key(myself, Key1),             % before any query compiles them
+    assertion(\+ oro_check(myself, ["Gadget rdfs:subClassOf Artifact"])).
+test(after_ontology_load, [ setup(ev_warm_reset(true)),
+                            true(Key1 \== Key0)
+                          ]) :-
+    ev_warm_key(myself, Key0),
+    test_fixture('store_kitchen.nt', File),
+    oro_load_ontology(File),
+    ev_warm_key(myself, Key1).
 test(off_leaves_them_to_the_query, [ setup(ev_warm_reset(false)) ]) :-
     oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
     oro_events_sync,

@@ -229,6 +229,19 @@ monitor_mask([-all, +assert, +retract, +update, +transaction]).
 %   watchers must not see the store emptied and filled again (with the
 %   same triples: their state stays right).
 
+%   Every schema change, once over, sends the watcher thread a message,
+%   after which it compiles ahead (warm_while_idle/0).  The messages of
+%   the changes' triples do not do: a write's commit sends them before
+%   the write bumps the schema generation for the last time, and a
+%   rolled-back write, an ontology load or a reset send none.
+
+:- multifile oro_store:schema_hook/1.
+
+oro_store:schema_hook(changed) :-
+    setting(warm_schemas, true),
+    watcher_running,
+    thread_send_message(oro_watcher_queue, schema_changed).
+
 :- multifile oro_store:rebuild_hook/1.
 
 oro_store:rebuild_hook(blocked(Deadline)) :-
@@ -1127,12 +1140,12 @@ watcher_loop :-
 %   tables of the models that have none for the current generation,
 %   one model at a time (`myself` first).  It stops when every model
 %   has them, and when a compilation did not give a model current
-%   tables (a schema change started meanwhile): the change's message
-%   will come and start it again, so a long schema-changing write is
-%   not met with compilation after compilation.  It reads the store
-%   through the rebuild gate, without waiting (oro_store_try_read/1):
-%   a store rebuild must not reset rdf_db under it, and ends with a
-%   schema change anyway.
+%   tables (a schema change started meanwhile): once that change is
+%   over, its schema_changed message (see below) starts it again, so a
+%   long schema-changing write is not met with compilation after
+%   compilation.  It reads the store through the rebuild gate, without
+%   waiting (oro_store_try_read/1): a store rebuild must not reset
+%   rdf_db under it, and sends schema_changed once it is over.
 
 warm_while_idle :-
     (   setting(warm_schemas, true),
@@ -1209,6 +1222,7 @@ handle(change(Snapshot, Touched, Schema, Delta)) :-
     run_direct_deliveries.
 handle(warm(Model)) :-                 % compiled unless already done
     ignore(oro_store_try_read(oro_shared_schema(Model, _))).
+handle(schema_changed).                 % warm_while_idle/0 follows
 handle(call(Request, Thread, Tag)) :-
     (   catch(request(Request, Result0), E, (Result0 = error(E)))
     ->  Result = Result0

@@ -342,9 +342,20 @@ store_write(Action, Goal) :-
 schema_written(Before) :-
     (   oro_schema_generation(After),
         After =\= Before
-    ->  flag(oro_schema_generation, G, G+1)
+    ->  schema_changed
     ;   true
     ).
+
+%   schema_changed: the schema generation changes for good (not the
+%   bump a schema triple makes inside its transaction): bump it and
+%   tell the hooks.
+
+schema_changed :-
+    flag(oro_schema_generation, G, G+1),
+    schema_hooks.
+
+schema_hooks :-
+    forall(schema_hook(changed), true).
 
 %!  oro_store_assert(+Model, +Triples, +Profile) is det.
 %
@@ -522,7 +533,7 @@ oro_load_ontology(File) :-
                  rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
                  assertz(ontology_graph(Graph)),
                  index_graph_names(Graph),
-                 flag(oro_schema_generation, G, G+1)
+                 schema_changed
                )).
 
 file_format(Path, Format) :-
@@ -551,7 +562,7 @@ oro_wipe_models :-
                  retractall(name_of(_, _)),
                  forall(ontology_graph(Onto), index_graph_names(Onto)),
                  retractall(model_alias(_, _)),
-                 flag(oro_schema_generation, G, G+1)
+                 schema_changed
                )).
 
 %   Presized hash tables double rdf_assert/4's speed on a growing store
@@ -577,7 +588,7 @@ oro_store_reset :-
                  retractall(model_graph(_, _, _)),
                  retractall(model_alias(_, _)),
                  retractall(ontology_graph(_)),
-                 flag(oro_schema_generation, G, G+1)
+                 schema_changed
                )).
 
 		 /*******************************
@@ -601,7 +612,7 @@ oro_store_attach(Dir) :-
                         ( create_model(Model),
                           index_graph_names(Graph)
                         )),
-                 flag(oro_schema_generation, G, G+1)
+                 schema_changed
                )).
 
 %   model_graph_name(+Graph, -Model): Graph is named by oro_graph/3
@@ -763,6 +774,21 @@ oro_store_read/1 must leave it off. */
 
 :- multifile rebuild_hook/1.
 
+%!  schema_hook(+Event) is semidet.
+%
+%   Multifile hook called with Event `changed` once the schema
+%   generation (oro_schema_generation/1) has changed for good: after a
+%   write that changed a schema triple (committed or rolled back), an
+%   ontology loaded, the models wiped, the store reset, a database
+%   attached or a store rebuilt (once readers may enter again).  The
+%   bump a schema triple makes inside its transaction does not call
+%   it.  Called by the thread that made the change, which may hold the
+%   `oro_write` mutex: a hook must be quick and must not wait for
+%   another thread.  The events module uses it to have the schema
+%   tables compiled ahead.
+
+:- multifile schema_hook/1.
+
 %!  oro_store_read(:Goal) is semidet.
 %
 %   Run Goal once, reading (or writing) the store, with no rebuild in
@@ -921,7 +947,8 @@ oro_store_rebuild :-
                      \+ rebuild_hook(blocked(Deadline)),
                      with_mutex(oro_write, rebuild_quiet(Deadline))
                    ),
-                   set_rebuilding(0))).
+                   set_rebuilding(0))),
+    schema_hooks.                       % once readers may enter again
 
 readers_gone(Deadline) :-
     get_flag(oro_store_readers, N),
