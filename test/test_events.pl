@@ -2805,10 +2805,11 @@ ev_counted(Base, N) :-
 %   the models that have none for the current schema generation, so the
 %   first query after a schema change (or on a new agent's model) does
 %   not; also after a change that sends no message of triples (a
-%   rolled-back write, an ontology loaded).  The tables are observed with oro_compiled_schema/2, which
-%   never compiles; no query runs on the model meanwhile.  With the
-%   setting off, the same changes leave the tables to the first query
-%   (the control: nothing else compiles them).
+%   rolled-back write, an ontology loaded).  The tables are observed
+%   with oro_compiled_schema/2, which never compiles; no query runs on
+%   the model meanwhile.  With the setting off, the same changes leave
+%   the tables to the first query (the control: nothing else compiles
+%   them).
 
 :- begin_tests(events_schema_ahead,
                [ setup(ev_init_testsuite),
