@@ -5,7 +5,8 @@
 
     In one process: the world of bench_world/2 (`facts` triples) is
     added with oro_add/2; then batches of 100 new statements (25 new
-    objects a batch: typed, on a shelf, coloured, visible) are added
+    objects a batch, as the world's: typed, on a piece of furniture,
+    coloured, visible) are added
     in `rounds` rounds.  Each round adds `per-round` batches through
     each of two paths, one after the other, so that a slow spell of the
     machine falls on both:
@@ -74,7 +75,8 @@ main :-
     format("~nWorld: ~D statements added in process.  ~d rounds of ~d \c
             batches of 100 through each path.~n~n", [Facts, Rounds, PerRound]),
     Writes is 2 * Rounds * PerRound,
-    new_batches(1, Writes, Batches),
+    First is Facts // 4 + 1,                % after the world's objects
+    new_batches(First, Writes, Batches),
     length(Steps, PerRound),
     append(Steps0, _, Batches),
     length(Steps0, PerRound),
@@ -85,35 +87,21 @@ main :-
                               Samples)),
     report(Samples).
 
-%   new_batches(+From, +Count, -Batches): Count batches of 100 new
-%   statements, objects `bobjI` from From on.
+%   new_batches(+From, +Count, -Batches): Count batches of 100
+%   statements of new objects (bench_object_statement/2), from `objFrom`
+%   on.
 
 new_batches(From, Count, Batches) :-
-    Objects is 25 * Count,
-    To is From + Objects - 1,
-    findall(S, ( between(From, To, I), batch_statement(I, S) ), Statements),
+    To is From + 25 * Count - 1,
+    findall(S, ( between(From, To, I), bench_object_statement(I, S) ),
+            Statements),
     bench_batches(Statements, 100, Batches).
-
-batch_statement(I, S) :-
-    nth0(C, ['Cup', 'Book', 'Box', 'Toy', 'Plate', 'VideoTape', 'Bottle'],
-         Class),
-    C =:= I mod 7,
-    !,
-    Shelf is I mod 997,
-    nth0(K, [red, green, blue, yellow, black, white], Color),
-    K =:= I mod 6,
-    !,
-    (   format(string(S), "bobj~d rdf:type ~w", [I, Class])
-    ;   format(string(S), "bobj~d isOn shelf~d", [I, Shelf])
-    ;   format(string(S), "bobj~d hasColor ~w", [I, Color])
-    ;   format(string(S), "bobj~d isVisible true", [I])
-    ).
 
 %   step_batch(+Batch, -Step): Batch with its subjects renamed, so that
 %   the steps never parse the texts of a batch that is added.
 
 step_batch(Batch, Step) :-
-    maplist([S0, S]>>( string_concat("bobj", Rest, S0),
+    maplist([S0, S]>>( string_concat("obj", Rest, S0),
                        string_concat("sobj", Rest, S)
                      ), Batch, Step).
 

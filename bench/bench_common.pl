@@ -34,6 +34,7 @@
             bench_row/5,                % +Name, +Size, +Median, +P99, +PerSecond
             bench_row/6,                % +Name, +Size, +Median, +P99, +PerSecond, +Options
             bench_world/2,              % +Triples, -Statements
+            bench_object_statement/2,   % +I, -Statement
             bench_batches/3,            % +List, +N, -Batches
             bench_log_requests/2        % +File, -Requests
           ]).
@@ -748,10 +749,15 @@ bench_row(Name, Size, Median, P99, PerSecond0, Options) :-
 
 bench_world(Triples, Statements) :-
     Objects is Triples // 4,
-    findall(S, ( between(1, Objects, I), object_statement(I, S) ),
+    findall(S, ( between(1, Objects, I), bench_object_statement(I, S) ),
             Statements).
 
-object_statement(I, S) :-
+%!  bench_object_statement(+I, -Statement) is multi.
+%
+%   The four statements of the object `objI` of bench_world/2, one a
+%   solution; for I beyond the world's objects, those of a new object.
+
+bench_object_statement(I, S) :-
     class(I, Class),
     F is I mod 50,
     color(I, Color),

@@ -9,7 +9,7 @@
 :- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
 :- use_module(library(oro/oro_store),
               [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,
-               oro_graph/3, oro_load_ontology/1]).
+               oro_graph/3, oro_load_ontology/1, oro_store_rebuild/0]).
 :- use_module(library(settings)).
 :- use_module(library(random)).
 :- use_module(library(aggregate)).
@@ -2805,11 +2805,11 @@ ev_counted(Base, N) :-
 %   the models that have none for the current schema generation, so the
 %   first query after a schema change (or on a new agent's model) does
 %   not; also after a change that sends no message of triples (a
-%   rolled-back write, an ontology loaded).  The tables are observed
-%   with oro_compiled_schema/2, which never compiles; no query runs on
-%   the model meanwhile.  With the setting off, the same changes leave
-%   the tables to the first query (the control: nothing else compiles
-%   them).
+%   rolled-back write, an ontology loaded, a store rebuilt).  The
+%   tables are observed with oro_compiled_schema/2, which never
+%   compiles; no query runs on the model meanwhile.  With the setting
+%   off, the same changes leave the tables to the first query (the
+%   control: nothing else compiles them).
 
 :- begin_tests(events_schema_ahead,
                [ setup(ev_init_testsuite),
@@ -2848,6 +2848,12 @@ test(after_ontology_load, [ setup(ev_warm_reset(true)),
     ev_warm_key(myself, Key0),
     test_fixture('store_kitchen.nt', File),
     oro_load_ontology(File),
+    ev_warm_key(myself, Key1).
+test(after_store_rebuild, [ setup(ev_warm_reset(true)),
+                            true(Key1 \== Key0)
+                          ]) :-
+    ev_warm_key(myself, Key0),
+    oro_store_rebuild,
     ev_warm_key(myself, Key1).
 test(off_leaves_them_to_the_query, [ setup(ev_warm_reset(false)) ]) :-
     oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),

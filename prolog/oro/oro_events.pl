@@ -99,7 +99,8 @@ once it is created, every model again after a schema change.  Without
 this, the first query of a model after such a change compiled them
 itself (3-4 ms on the bench's world).  A message that arrives while
 the thread compiles waits for that one model, and a compilation that
-a schema change made stale is not retried before the next message.
+a schema change made stale is not retried before that change is over
+(the store's schema_hook/1 then sends the thread a message).
 
 ## Incremental evaluation
 

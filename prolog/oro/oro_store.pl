@@ -849,9 +849,9 @@ leave_gate :-
 %   oro_store_gate, which the rebuild holds to set its mark
 %   (set_rebuilding/1): a reader and a rebuild are ordered by it.
 %   Called only by the setup and cleanup of oro_store_read/1 and
-%   oro_store_try_read/1, where
-%   signals wait, so the mutex is always unlocked.  (Not flag/3, which
-%   meta-calls update_flag/3 under a global mutex on every update.)
+%   oro_store_try_read/1, where signals wait, so the mutex is always
+%   unlocked.  (Not flag/3, which meta-calls update_flag/3 under a
+%   global mutex on every update.)
 
 gate_count(Delta, Rebuilding) :-
     mutex_lock(oro_store_gate),
