@@ -3,6 +3,8 @@
 :- use_module(oro_test_client).
 :- use_module('../bench/bench_common', [bench_pin_to_cpu/1, bench_cpus/1, bench_set_cpus/1]).
 :- use_module(library(oro)).
+:- use_module('../prolog/oro/oro_reason',
+              [oro_compiled_schema/2, oro_schema_superclass/3]).
 
 /*  Tests for durability (issue #8): the database directory of
     oro_init/1's db(Dir) and the server's --db=DIR.
@@ -44,7 +46,8 @@
 :- use_module(library(pairs)).
 :- use_module(library(socket)).
 :- use_module('../prolog/oro/oro_persist').
-:- use_module('../prolog/oro/oro_store', [oro_shared_graph/2]).
+:- use_module('../prolog/oro/oro_store',
+              [oro_shared_graph/2, oro_store_attach/1, oro_store_detach/0]).
 
 %   durability_dir(-Dir): a fresh directory name (not created).
 
@@ -153,7 +156,35 @@ test(saved_file_not_journaled,
     oro_shared_graph(scratch(save), Graph),
     findall(J, rdf_journal_file(Graph, J), Journals).
 
+%   Attaching a database restores its models' schema triples: the
+%   watcher thread compiles the new tables ahead, before any query.
+
+test(restored_schema_compiled_ahead,
+     [ setup(durability_dir(Dir)),
+       cleanup(durability_cleanup(Dir)),
+       true(Key1 \== Key0)
+     ]) :-
+    oro_init([db(Dir), commonsense(false)]),
+    oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
+    oro_store_detach,
+    oro_reset,                              % not journaled: detached
+    durability_compiled(Key0),
+    rdf_global_id(oro:'Gadget', Gadget),
+    rdf_global_id(oro:'Artifact', Artifact),
+    assertion(\+ oro_schema_superclass(Key0, Gadget, Artifact)),
+    oro_store_attach(Dir),
+    durability_compiled(Key1),
+    assertion(oro_schema_superclass(Key1, Gadget, Artifact)).
+
 :- end_tests(durability_restore).
+
+%   durability_compiled(-Key): myself's shared schema tables for the
+%   current generation, once the watcher thread has compiled them (10 s
+%   at most).
+
+durability_compiled(Key) :-
+    assertion(test_wait_until(oro_compiled_schema(myself, _), 10)),
+    oro_compiled_schema(myself, Key).
 
 :- begin_tests(durability_memory).
 
