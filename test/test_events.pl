@@ -6,7 +6,8 @@
 :- use_module(library(pairs)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
+:- use_module(library(oro/oro_reason),
+              [oro_compiled_schema/2, oro_shared_schema/2]).
 :- use_module(library(oro/oro_store),
               [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,
                oro_graph/3, oro_load_ontology/1, oro_store_rebuild/0]).
@@ -2855,6 +2856,27 @@ test(after_store_rebuild, [ setup(ev_warm_reset(true)),
     ev_warm_key(myself, Key0),
     oro_store_rebuild,
     ev_warm_key(myself, Key1).
+%   Another thread compiles the shared tables of the generation a
+%   write's schema triple has bumped, before the write commits: they
+%   lack the triple, and the writing thread must not use them.
+
+test(writer_not_given_others_tables, [ setup(ev_warm_reset(true)),
+                                       true(Seen-Key == true-Key0)
+                                     ]) :-
+    oro_statements(["Gadget rdfs:subClassOf Artifact",
+                    "g1 rdf:type Gadget"], Triples, _),
+    oro_store_write(test(myself),
+                    ( oro_store_assert(myself, Triples, longterm),
+                      thread_self(Me),
+                      thread_create(( oro_shared_schema(myself, K),
+                                      thread_send_message(Me, ev_key(K))
+                                    ), T, []),
+                      thread_join(T, true),
+                      thread_get_message(ev_key(Key0)),
+                      oro_compiled_schema(myself, Key),
+                      test_bool(oro_check(myself, ["g1 rdf:type Artifact"]),
+                                Seen)
+                    )).
 test(off_leaves_them_to_the_query, [ setup(ev_warm_reset(false)) ]) :-
     oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
     oro_events_sync,

@@ -186,6 +186,10 @@ schema(Model, Key) :-
     !,
     Key = Key0.
 schema(Model, Key) :-
+    oro_store_schema_pending,
+    !,
+    private_schema(Model, Key).
+schema(Model, Key) :-
     oro_schema_generation(Gen),
     (   schema_key(Model, Gen, Key0)
     ->  Key = Key0
@@ -212,6 +216,40 @@ compile_schema_once(Model, Gen, Key) :-
                   [Model, Key, Gen])
         ;   drop_schema(Key)
         )
+    ).
+
+%   private_schema(+Model, -Key): the schema tables of Model for a
+%   thread whose write has changed the schema (oro_store_schema_pending/0).
+%   The generation is already bumped, but other threads do not see the
+%   change yet: tables they compile for that generation lack it, and
+%   tables this thread compiles must not reach them (the write may
+%   still be rolled back).  So they are compiled for this thread alone,
+%   once a generation, and kept in its global variable
+%   oro_private_schemas (Model-Gen-Key), one a model; this thread
+%   drops the older ones, and all of them when it ends.
+
+private_schema(Model, Key) :-
+    oro_schema_generation(Gen),
+    (   nb_current(oro_private_schemas, Private)
+    ->  true
+    ;   Private = [],
+        thread_at_exit(drop_private_schemas)
+    ),
+    (   memberchk(Model-Gen-Key0, Private)
+    ->  Key = Key0
+    ;   flag(oro_schema_key, Key, Key+1),
+        compile_schema(Model, Key),
+        (   selectchk(Model-_-Old, Private, Rest)
+        ->  retract_schema(Old)
+        ;   Rest = Private
+        ),
+        nb_setval(oro_private_schemas, [Model-Gen-Key|Rest])
+    ).
+
+drop_private_schemas :-
+    (   nb_current(oro_private_schemas, Private)
+    ->  forall(member(_-_-Key, Private), retract_schema(Key))
+    ;   true
     ).
 
 %!  oro_compile_schema(+Model, -Key) is det.

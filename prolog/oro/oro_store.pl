@@ -14,6 +14,7 @@
             oro_store_forget/3,         % +Model, +Profile, +Triples
             oro_store_write/2,          % +Action, :Goal
             oro_schema_generation/1,    % -Generation
+            oro_store_schema_pending/0,
             oro_schema_triple/2,        % +P, +O
             oro_schema_class/1,         % ?Class
             oro_load_ontology/1,        % +File
@@ -317,6 +318,7 @@ committed_write(Action, Goal) :-
 
 write_over :-
     nb_setval(oro_store_writing, false),
+    nb_setval(oro_store_schema_pending, false),
     nb_setval(oro_store_maybe_unused, []).
 
 %   after_write: once a write is committed, drop the IRIs no triple
@@ -454,9 +456,20 @@ oro_schema_generation(Generation) :-
 
 note_schema_change(P, O) :-
     (   oro_schema_triple(P, O)
-    ->  flag(oro_schema_generation, G, G+1)
+    ->  flag(oro_schema_generation, G, G+1),
+        nb_setval(oro_store_schema_pending, true)
     ;   true
     ).
+
+%!  oro_store_schema_pending is semidet.
+%
+%   True in the thread of a write (oro_store_write/2) that has changed
+%   a schema triple.  Until the write is over, that thread sees a schema
+%   other threads do not, under the same schema generation: the shared
+%   tables of that generation (oro_reason) are not for it.
+
+oro_store_schema_pending :-
+    nb_current(oro_store_schema_pending, true).
 
 %!  oro_schema_triple(+P, +O) is semidet.
 %
