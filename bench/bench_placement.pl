@@ -34,6 +34,7 @@
 :- use_module(library(option)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(pairs)).
 :- use_module(library(error)).
 :- use_module(bench_common).
 
@@ -147,14 +148,11 @@ report(Placements, Facts, PerRound) :-
            report_row(Name, Server, Client, PerRound)).
 
 report_row(Name, Server, Client, PerRound) :-
-    findall(E, ( member(Figures, PerRound),
-                 memberchk(Name-F, Figures),
-                 E = F.echo
-               ), Echoes),
-    findall(R, ( member(Figures, PerRound),
-                 memberchk(Name-F, Figures),
-                 R = F.per_s
-               ), Rates),
+    findall(Echo0-Rate0,
+            ( member(Figures, PerRound),
+              memberchk(Name-figures{echo:Echo0, per_s:Rate0}, Figures)
+            ), Pairs),
+    pairs_keys_values(Pairs, Echoes, Rates),
     bench_summary(Echoes, Echo, _),
     bench_summary(Rates, Rate, _),
     min_list(Rates, Min),

@@ -237,8 +237,7 @@ private_schema(Model, Key) :-
     ),
     (   memberchk(Model-Gen-Key0, Private)
     ->  Key = Key0
-    ;   flag(oro_schema_key, Key, Key+1),
-        compile_schema(Model, Key),
+    ;   oro_compile_schema(Model, Key),
         (   selectchk(Model-_-Old, Private, Rest)
         ->  retract_schema(Old)
         ;   Rest = Private
