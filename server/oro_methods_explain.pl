@@ -69,13 +69,7 @@ oro_methods:method(explain(set), querying,
                    oro_methods_explain:m_explain).
 
 m_explain(Statements, list(Values)) :-
-    oro_statements(Statements, Triples, _),
-    (   member(T, Triples),
-        \+ ground(T)
-    ->  statement_text(T, Text),
-        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
-    ;   true
-    ),
+    oro_complete_statements(Statements, Triples),
     maplist(statement_value(myself), Triples, Values0),
     (   oro_consistent(myself)
     ->  Values = Values0

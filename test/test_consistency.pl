@@ -230,6 +230,18 @@ test(check_consistency_of_statements,
     test_ok(checkConsistency, ['[cow rdf:type Plant]'], V2),
     test_ok(check, ['[cow drinks water]'], V3),
     Values = [V1, V2, V3].
+test(patterns_refused_as_by_add,
+     [ setup(cons_fresh),
+       true(Replies == [Refused, Refused, Refused, ok("false")])
+     ]) :-
+    Refused = error("laas.openrobots.ontology.exceptions.IllegalStatementException",
+                    "A complete statement is expected here, not a pattern: \c
+                     ?x rdf:type Monkey."),
+    test_call(checkConsistency, ['[?x rdf:type Monkey]'], R1),
+    test_call(safeAdd, ['[?x rdf:type Monkey]'], R2),
+    test_call(add, ['[?x rdf:type Monkey]'], R3),
+    test_call(check, ['[coco rdf:type Monkey]'], R4),
+    Replies = [R1, R2, R3, R4].
 test(update,
      [ setup(cons_fresh),
        true(Values == ["true", ["21"], ["99.5"],

@@ -1006,8 +1006,7 @@ individual_conflict(Model, checks(_, _, _, _, DPs), X, disjoint_properties(P, Q,
 
 oro_consistent_with(Model0, Statements) :-
     oro_resolve_model(Model0, Model),
-    oro_statements(Statements, Triples, _),
-    must_be(ground, Triples),
+    oro_complete_statements(Statements, Triples),
     catch(oro_store_write(check(Model), hypothesis(Model, Triples)),
           oro_hypothesis(Result),
           true),
@@ -1036,12 +1035,7 @@ hypothesis(Model, Triples) :-
 oro_safe_add(Model0, Statements, Profile0, Accepted) :-
     oro_resolve_model(Model0, Model),
     oro_memory_profile(Profile0, Profile),
-    oro_statements(Statements, Triples, _),
-    (   member(T, Triples), \+ ground(T)
-    ->  format(string(Text), "~w", [T]),
-        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
-    ;   true
-    ),
+    oro_complete_statements(Statements, Triples),
     oro_store_write(safe_add(Model),
                     safe_add(Model, Triples, Profile, Result, Gen0)),
     (   Result == false

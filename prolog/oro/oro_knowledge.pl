@@ -166,48 +166,6 @@ oro_robot_id(Id) :-
     setting(robot_id, Id).
 
 		 /*******************************
-		 *         STATEMENTS           *
-		 *******************************/
-
-%   complete_triples(+Statements, -Triples): the triples of
-%   Statements, which must all be complete.  The error names the first
-%   pattern as the client wrote it: its text, trimmed, or the light
-%   form of a term (`x ?_ y`).
-
-complete_triples(Statements, Triples) :-
-    oro_statements(Statements, Triples, _),
-    (   first_pattern(Statements, Triples, Statement, Triple)
-    ->  statement_display(Statement, Triple, Text),
-        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
-    ;   true
-    ).
-
-first_pattern([Statement0|Statements], [Triple0|Triples],
-              Statement, Triple) :-
-    (   ground(Triple0)
-    ->  first_pattern(Statements, Triples, Statement, Triple)
-    ;   Statement = Statement0,
-        Triple = Triple0
-    ).
-
-%   statement_display(+Statement, +Triple, -Text): Text (a string)
-%   shows Statement to the client who gave it.
-
-statement_display(Statement, rdf(S, P, O), Text) :-
-    (   atomic(Statement)                   % a string or an atom
-    ->  split_string(Statement, "", " \t\r\n", [Text])
-    ;   maplist(position_display, [S, P, O], Parts),
-        atomic_list_concat(Parts, ' ', Atom),
-        atom_string(Atom, Text)
-    ).
-
-position_display(Term, Text) :-
-    (   var(Term)
-    ->  Text = '?_'
-    ;   oro_term_light_text(Term, Text)
-    ).
-
-		 /*******************************
 		 *          CHANGES             *
 		 *******************************/
 
@@ -232,7 +190,7 @@ oro_add(Model, Statements) :-
 oro_add(Model0, Statements, Profile0) :-
     oro_resolve_model(Model0, Model),
     oro_memory_profile(Profile0, Profile),
-    complete_triples(Statements, Triples),
+    oro_complete_statements(Statements, Triples),
     oro_store_write(add(Model), add_triples(Model, Triples, Profile)).
 
 add_triples(Model, Triples, Profile) :-
@@ -294,7 +252,7 @@ asserted_match(Model, rdf(S, P, O), rdf(S, P, Stored)) :-
 
 oro_update(Model0, Statements) :-
     oro_resolve_model(Model0, Model),
-    complete_triples(Statements, Triples),
+    oro_complete_statements(Statements, Triples),
     oro_store_write(update(Model), update_triples(Model, Triples)).
 
 update_triples(Model, Triples) :-

@@ -6,7 +6,8 @@
             oro_parse_statement/2,      % +Text, -Triple
             oro_parse_statements/2,     % +Texts, -Triples
             oro_is_partial/1,           % +Triple
-            oro_statements/3            % +Statements, -Triples, -Bindings
+            oro_statements/3,           % +Statements, -Triples, -Bindings
+            oro_complete_statements/2   % +Statements, -Triples
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -1495,6 +1496,49 @@ oro_statements(Statements, Triples, Bindings) :-
     must_be(list, Statements),
     statement_triples(Statements, Triples, [], Bindings0),
     reverse(Bindings0, Bindings).
+
+%!  oro_complete_statements(+Statements, -Triples) is det.
+%
+%   As oro_statements/3, for Statements that must all be complete (no
+%   variable): the statements a change asserts, or a hypothesis.
+%
+%   @error syntax_error(oro_statement_incomplete(Text)) for the first
+%          pattern, Text showing it as the client wrote it: its text,
+%          trimmed, or the light form of a term (`x ?_ y`).
+%   @error the errors of oro_statements/3.
+
+oro_complete_statements(Statements, Triples) :-
+    oro_statements(Statements, Triples, _),
+    (   first_pattern(Statements, Triples, Statement, Triple)
+    ->  statement_display(Statement, Triple, Text),
+        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
+    ;   true
+    ).
+
+first_pattern([Statement0|Statements], [Triple0|Triples],
+              Statement, Triple) :-
+    (   ground(Triple0)
+    ->  first_pattern(Statements, Triples, Statement, Triple)
+    ;   Statement = Statement0,
+        Triple = Triple0
+    ).
+
+%   statement_display(+Statement, +Triple, -Text): Text (a string)
+%   shows Statement to the client who gave it.
+
+statement_display(Statement, rdf(S, P, O), Text) :-
+    (   atomic(Statement)                   % a string or an atom
+    ->  split_string(Statement, "", " \t\r\n", [Text])
+    ;   maplist(position_display, [S, P, O], Parts),
+        atomic_list_concat(Parts, ' ', Atom),
+        atom_string(Atom, Text)
+    ).
+
+position_display(Term, Text) :-
+    (   var(Term)
+    ->  Text = '?_'
+    ;   oro_term_light_text(Term, Text)
+    ).
 
 statement_triples([], [], B, B).
 statement_triples([Statement|Statements], [Triple|Triples], B0, B) :-
