@@ -781,6 +781,30 @@ test(instances_of_individual, true(Name == "com.hp.hpl.jena.shared.NotFoundExcep
 
 :- end_tests(srv_taxonomy).
 
+%   The bundled ontology never names owl:Thing, the top of every answer.
+
+:- begin_tests(srv_taxonomy_commonsense,
+               [ setup(srv_start_commonsense),
+                 cleanup(srv_stop)
+               ]).
+
+test(superclasses, true(Pairs == [ "Agent"-"agent",
+                                   "EmbodiedAgent"-"embodied agent",
+                                   "owl:Thing"-"Thing"
+                                 ])) :-
+    srv_map_call(getSuperclassesOf, ['Robot'], Pairs).
+test(classes_of, true(Keys == ["Agent", "EmbodiedAgent", "Robot", "owl:Thing"])) :-
+    test_call(getClassesOf, [myself], Reply),
+    srv_keys(Reply, Keys).
+test(label_of_thing, true(Reply == ok("\"Thing\""))) :-
+    test_call(getLabel, ['owl:Thing'], Reply).
+test(ontology_header_no_instance, true(Keys == [])) :-
+    test_call(getInstancesOf, ['owl:Thing'], Reply),
+    srv_keys(Reply, Keys0),
+    include(==("http://kb.openrobots.org"), Keys0, Keys).
+
+:- end_tests(srv_taxonomy_commonsense).
+
 
                  /*******************************
                  *   INFOS, LABELS, DETAILS     *

@@ -263,3 +263,35 @@ test(unknown, [ setup(taxonomy_insects),
     taxonomy(classes_of, i_d_ont_exist, _).
 
 :- end_tests(classes_of).
+
+
+                 /*******************************
+                 *     THE BUNDLED ONTOLOGY     *
+                 *******************************/
+
+%   The common-sense ontology never names owl:Thing, which the
+%   taxonomy gives as the top class: its label must not need a triple.
+%   The ontology's header (`<http://kb.openrobots.org> a owl:Ontology`,
+%   with annotations) is no individual.
+
+:- begin_tests(commonsense_taxonomy, [setup(oro_init([]))]).
+
+test(superclasses_labelled,
+     [ true(Pairs == ['Agent'-agent, 'EmbodiedAgent'-'embodied agent',
+                      'owl:Thing'-'Thing'])
+     ]) :-
+    taxonomy_labelled(superclasses, 'Robot', Pairs).
+test(classes_of_labelled, [true(memberchk('owl:Thing'-'Thing', Pairs))]) :-
+    oro_add(myself, ["cup1 rdf:type Cup"]),
+    taxonomy_labelled(classes_of, cup1, Pairs).
+test(label_of_thing, true(Label == 'Thing')) :-
+    oro_label(myself, owl:'Thing', Label).
+test(header_no_individual, fail) :-
+    oro_individual(myself, 'http://kb.openrobots.org').
+test(header_no_instance_of_thing, true(Header == [])) :-
+    oro_instances(myself, owl:'Thing', Xs),
+    include(==('http://kb.openrobots.org'), Xs, Header).
+test(header_not_looked_up, true(Matches == [])) :-
+    oro_lookup(myself, "kb.openrobots.org", Matches).
+
+:- end_tests(commonsense_taxonomy).

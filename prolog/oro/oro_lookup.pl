@@ -41,10 +41,12 @@ inference closure of the model.
 %!  oro_exists(+Model, +Resource) is semidet.
 %
 %   Resource appears in Model, as subject, predicate or object of a
-%   visible triple.
+%   visible triple, or is owl:Thing, the class of every individual,
+%   which the taxonomy gives whether or not a triple names it.
 
 oro_exists(Model, Resource) :-
-    (   oro_asserted(Model, Resource, _, _)
+    (   rdf_equal(Resource, owl:'Thing')
+    ;   oro_asserted(Model, Resource, _, _)
     ;   oro_asserted(Model, _, Resource, _)
     ;   oro_asserted(Model, _, _, Resource)
     ),

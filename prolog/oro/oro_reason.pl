@@ -1719,16 +1719,30 @@ is_individual(Model, X) :-
     individual_evidence(Model, X),
     !.
 
+%   individual_evidence(+Model, +X): X is typed by a class, or is the
+%   subject or object of a property that is not of the vocabulary of
+%   RDF or OWL; but the header of an ontology (`<iri> a owl:Ontology`)
+%   is not an individual, whatever annotations it has.
+
 individual_evidence(Model, X) :-
+    \+ ontology_header(Model, X),
+    evidence(Model, X).
+
+evidence(Model, X) :-
     rdf_equal(rdf:type, Type),
     oro_asserted(Model, X, Type, C),
     \+ meta_class(C).
-individual_evidence(Model, X) :-
+evidence(Model, X) :-
     oro_asserted(Model, X, Q, _),
     instance_predicate(Q).
-individual_evidence(Model, X) :-
+evidence(Model, X) :-
     oro_asserted(Model, _, Q, X),
     instance_predicate(Q).
+
+ontology_header(Model, X) :-
+    rdf_equal(rdf:type, Type),
+    rdf_equal(owl:'Ontology', Ontology),
+    oro_asserted(Model, X, Type, Ontology).
 
 individual_candidate(Model, X) :-
     oro_asserted(Model, S, Q, O),
