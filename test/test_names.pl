@@ -235,4 +235,37 @@ test(plain, true(Text == babouin)) :-
 test(quotes_kept_inside, true(Text == 'say "hi"')) :-
     oro_term_text(literal(lang(en, 'say "hi"')), Text).
 
+%   Numbers are written in canonical form: rdf_db keeps one term for
+%   literals of the same value (the lexical form first asserted wins),
+%   so the lexical form as stored depends on history.
+
+test(int_canonical, true(Texts == ['7', '7', '-3', '12'])) :-
+    maplist(typed_text,
+            [t(xsd:int, '+7'), t(xsd:integer, '007'), t(xsd:long, '-03'),
+             t(xsd:unsignedShort, '12')], Texts).
+test(double_canonical, true(Texts == ['150.0', '48.5', '0.001'])) :-
+    maplist(typed_text,
+            [t(xsd:double, '150'), t(xsd:decimal, '48.50'),
+             t(xsd:float, '1.0e-3')], Texts).
+test(not_a_number_kept, true(Texts == ['INF', 'NaN', abc])) :-
+    maplist(typed_text,
+            [t(xsd:double, 'INF'), t(xsd:double, 'NaN'), t(xsd:int, abc)],
+            Texts).
+test(canonical_in_statements, true(Text == '150.0')) :-
+    test_literal(xsd:double, '150', L),
+    oro_term_light_text(L, Text).
+test(numeric_datatypes, true(Kinds == [integer, integer, decimal, double])) :-
+    maplist(xsd_kind, [int, unsignedByte, decimal, double], Kinds).
+test(not_numeric, fail) :-
+    rdf_global_id(xsd:dateTime, Type),
+    oro_numeric_datatype(Type, _).
+
 :- end_tests(literal_text).
+
+typed_text(t(Type, Lex), Text) :-
+    test_literal(Type, Lex, Literal),
+    oro_term_text(Literal, Text).
+
+xsd_kind(Local, Kind) :-
+    rdf_global_id(xsd:Local, Type),
+    oro_numeric_datatype(Type, Kind).

@@ -554,6 +554,16 @@ test(domain_inference, [ setup(srv_fresh),
     test_set_call(find, [animals, '[?animals rdf:type Animal]'], Xs).
 test(literal_values, true(Xs == ["12", "35"])) :-
     test_set_call(find, [a, '[?x rdf:type Monkey, ?x age ?a]'], Xs).
+test(numbers_canonical, [ setup(srv_fresh),
+                          true(Xs == [["7"], ["150.0"]])
+                        ]) :-
+    % rdf_db keeps one term for `"+7"^^xsd:int` and `7`: the reply must
+    % not depend on which came first.
+    test_ok(add, ['[x1 v "+7"^^xsd:int, x2 v "150"^^xsd:double]']),
+    test_ok(add, ['[y1 v 7, y2 v 150.0]']),
+    test_set_call(find, [o, '[y1 v ?o]'], X1),
+    test_set_call(find, [o, '[y2 v ?o]'], X2),
+    Xs = [X1, X2].
 
 :- end_tests(srv_find).
 

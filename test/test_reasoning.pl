@@ -506,6 +506,17 @@ test(added_string_label, [ setup(reasoning_testsuite),
                          ]) :-
     oro_add(myself, ["gorilla rdfs:label \"king kong\""]),
     test_find(myself, x, ["?x rdfs:label \"king kong\""], Xs).
+test(unsigned_short_by_value, [setup(reasoning_testsuite)]) :-
+    oro_add(myself, ["gorilla legs \"2\"^^xsd:unsignedShort"]),
+    oro_check(myself, ["gorilla legs 2"]).
+test(same_value_canonical_text, [ setup(reasoning_testsuite),
+                                  true(Texts == ['7', '150.0'])
+                                ]) :-
+    oro_add(myself, ["x1 v \"+7\"^^xsd:int", "y1 v 7",
+                     "x2 v \"150\"^^xsd:double", "y2 v 150.0"]),
+    oro_find(myself, o, ["y1 v ?o"], [V1]),
+    oro_find(myself, o, ["y2 v ?o"], [V2]),
+    maplist(oro_term_text, [V1, V2], Texts).
 test(term_number_pattern, [ setup(reasoning_testsuite),
                             true(Xs == [cow, gorilla])
                           ]) :-

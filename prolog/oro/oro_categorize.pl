@@ -747,24 +747,5 @@ boolean_lexical(false, false).
 boolean_lexical('0', false).
 
 numeric_type(Type) :-
-    rdf_equal(xsd:'', XSD),
-    atom_concat(XSD, Local, Type),
-    numeric_local(Local),
+    oro_numeric_datatype(Type, _),
     !.
-
-numeric_local(int).
-numeric_local(integer).
-numeric_local(long).
-numeric_local(short).
-numeric_local(byte).
-numeric_local(nonNegativeInteger).
-numeric_local(positiveInteger).
-numeric_local(negativeInteger).
-numeric_local(nonPositiveInteger).
-numeric_local(unsignedInt).
-numeric_local(unsignedLong).
-numeric_local(unsignedShort).
-numeric_local(unsignedByte).
-numeric_local(double).
-numeric_local(float).
-numeric_local(decimal).

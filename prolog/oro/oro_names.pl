@@ -5,6 +5,7 @@
             oro_iri_name/2,             % +IRI, -Text
             oro_local_name/2,           % +IRI, -Local
             oro_literal_lexical/2,      % +Literal, -Lexical
+            oro_numeric_datatype/2,     % ?Type, ?Kind
             oro_term_text/2,            % +Term, -Text
             oro_term_local_text/2,      % +Term, -Text
             oro_term_light_text/2,      % +Term, -Text
@@ -192,14 +193,26 @@ after_last(Atom, Sep, After) :-
 %!  oro_literal_lexical(+Literal, -Lexical) is det.
 %
 %   The lexical form of an rdf_db literal term, as an atom, without
-%   quotes, datatype or language tag.
+%   quotes, datatype or language tag.  A number of a numeric XSD
+%   datatype (oro_numeric_datatype/2) is given in its canonical form:
+%   `7` for `"+7"^^xsd:int`, `150.0` for `"150"^^xsd:double`, `48.5`
+%   for `"48.50"^^xsd:decimal`.  rdf_db stores literals of some of
+%   these datatypes that have the same value as one term, with the
+%   lexical form of the first one asserted (`y v 7` after `x v "+7"^^xsd:int`
+%   holds `"+7"`); the canonical form does not depend on that
+%   history, and keeps a double a double for clients that read the
+%   text back as a number.  A lexical form that is not a number (`INF`)
+%   is left as it is.
 
 oro_literal_lexical(literal(Value), Lexical) :-
     literal_value_lexical(Value, Lexical).
 
-literal_value_lexical(type(_, Lex), Lexical) :-
+literal_value_lexical(type(Type, Lex), Lexical) :-
     !,
-    atomic_atom(Lex, Lexical).
+    (   canonical_number(Type, Lex, Canonical)
+    ->  Lexical = Canonical
+    ;   atomic_atom(Lex, Lexical)
+    ).
 literal_value_lexical(lang(_, Lex), Lexical) :-
     !,
     atomic_atom(Lex, Lexical).
@@ -211,6 +224,58 @@ atomic_atom(Value, Atom) :-
     ->  Atom = Value
     ;   format(atom(Atom), '~w', [Value])
     ).
+
+canonical_number(Type, Lex, Canonical) :-
+    oro_numeric_datatype(Type, Kind),
+    (   atom(Lex)
+    ->  atom_number(Lex, N)
+    ;   number(Lex)
+    ->  N = Lex
+    ),
+    canonical_text(Kind, N, Canonical).
+
+canonical_text(integer, N, Text) :-
+    integer(N),
+    atom_number(Text, N).
+canonical_text(Kind, N, Text) :-
+    Kind \== integer,
+    F is float(N),
+    F =:= F,                            % not NaN
+    abs(F) =\= inf,
+    format(atom(Text), '~w', [F]).
+
+%!  oro_numeric_datatype(?Type, ?Kind) is nondet.
+%
+%   Type is a numeric XSD datatype (an IRI) of Kind: `integer` (and
+%   the types derived from it), `decimal`, `float` or `double`.  The
+%   one list of them: literals of these types compare by value, and
+%   are written back in canonical form (oro_literal_lexical/2).
+
+oro_numeric_datatype(Type, Kind) :-
+    rdf_equal(xsd:'', XSD),
+    (   atom(Type)
+    ->  atom_concat(XSD, Local, Type),
+        numeric_local(Local, Kind)
+    ;   numeric_local(Local, Kind),
+        atom_concat(XSD, Local, Type)
+    ).
+
+numeric_local(integer,            integer).
+numeric_local(int,                integer).
+numeric_local(long,               integer).
+numeric_local(short,              integer).
+numeric_local(byte,               integer).
+numeric_local(nonNegativeInteger, integer).
+numeric_local(positiveInteger,    integer).
+numeric_local(negativeInteger,    integer).
+numeric_local(nonPositiveInteger, integer).
+numeric_local(unsignedLong,       integer).
+numeric_local(unsignedInt,        integer).
+numeric_local(unsignedShort,      integer).
+numeric_local(unsignedByte,       integer).
+numeric_local(decimal,            decimal).
+numeric_local(float,              float).
+numeric_local(double,             double).
 
 %!  oro_term_text(+Term, -Text) is det.
 %

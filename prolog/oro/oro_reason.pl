@@ -1384,20 +1384,8 @@ boolean_lexical('1', true).
 boolean_lexical(false, false).
 boolean_lexical('0', false).
 
-bare_type(xsd:int, number).
-bare_type(xsd:integer, number).
-bare_type(xsd:long, number).
-bare_type(xsd:short, number).
-bare_type(xsd:byte, number).
-bare_type(xsd:nonNegativeInteger, number).
-bare_type(xsd:positiveInteger, number).
-bare_type(xsd:negativeInteger, number).
-bare_type(xsd:nonPositiveInteger, number).
-bare_type(xsd:unsignedInt, number).
-bare_type(xsd:unsignedLong, number).
-bare_type(xsd:double, number).
-bare_type(xsd:float, number).
-bare_type(xsd:decimal, number).
+bare_type(Type, number) :-
+    oro_numeric_datatype(Type, _).
 bare_type(xsd:boolean, boolean).
 
 %!  oro_datatype_member(+Literal, +Filler) is semidet.

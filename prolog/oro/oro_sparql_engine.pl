@@ -1954,22 +1954,8 @@ kind_type(decimal, xsd:decimal).
 kind_type(float,   xsd:float).
 kind_type(double,  xsd:double).
 
-numeric_type(xsd:integer, integer).
-numeric_type(xsd:int, integer).
-numeric_type(xsd:long, integer).
-numeric_type(xsd:short, integer).
-numeric_type(xsd:byte, integer).
-numeric_type(xsd:nonNegativeInteger, integer).
-numeric_type(xsd:positiveInteger, integer).
-numeric_type(xsd:negativeInteger, integer).
-numeric_type(xsd:nonPositiveInteger, integer).
-numeric_type(xsd:unsignedLong, integer).
-numeric_type(xsd:unsignedInt, integer).
-numeric_type(xsd:unsignedShort, integer).
-numeric_type(xsd:unsignedByte, integer).
-numeric_type(xsd:decimal, decimal).
-numeric_type(xsd:float, float).
-numeric_type(xsd:double, double).
+numeric_type(Type, Kind) :-
+    oro_numeric_datatype(Type, Kind).
 
 date_type(xsd:dateTime).
 date_type(xsd:date).
