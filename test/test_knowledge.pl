@@ -666,11 +666,21 @@ test(parent_inside_path, [ setup(knowledge_save_init(Dir)),
                            error(permission_error(write, oro_file, _))
                          ]) :-
     oro_save(myself, 'sub/../../x.owl').
-test(absolute_path, [ setup(knowledge_save_init(Dir)),
-                      cleanup(delete_directory_and_contents(Dir)),
-                      error(permission_error(write, oro_file, _))
-                    ]) :-
-    directory_file_path(Dir, 'x.owl', Absolute),
+test(absolute_path_inside, [ setup(knowledge_save_init(Dir)),
+                             cleanup(delete_directory_and_contents(Dir))
+                           ]) :-
+    absolute_file_name(Dir, AbsDir),
+    directory_file_path(AbsDir, 'x.owl', Absolute),
+    oro_save(myself, Absolute),
+    knowledge_reload(Dir, 'x.owl'),
+    oro_check(myself, ["gorilla rdf:type Monkey"]).
+test(absolute_path_outside, [ setup(knowledge_save_init(Dir)),
+                              cleanup(delete_directory_and_contents(Dir)),
+                              error(permission_error(write, oro_file, _))
+                            ]) :-
+    absolute_file_name(Dir, AbsDir),
+    file_directory_name(AbsDir, Parent),
+    directory_file_path(Parent, 'x.owl', Absolute),
     oro_save(myself, Absolute).
 test(nothing_written_on_error, [ setup(knowledge_save_init(Dir)),
                                  cleanup(delete_directory_and_contents(Dir)),

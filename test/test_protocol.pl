@@ -977,6 +977,12 @@ test(save_outside,
 test(save_absolute,
      true(Name == "laas.openrobots.ontology.exceptions.OntologyServerException")) :-
     test_call(save, ['/tmp/oro-test-x.owl'], error(Name, _)).
+test(save_absolute_inside, true(Exists == true)) :-
+    srv_save_dir(Dir0),
+    absolute_file_name(Dir0, Dir),
+    directory_file_path(Dir, 'inside.owl', File),
+    test_ok(save, [File]),
+    test_bool(exists_file(File), Exists).
 
 :- end_tests(srv_admin).
 

@@ -336,10 +336,11 @@ variable_name(Text, Name) :-
 %
 %   Write what is asserted in Model (its ontology layer included, less
 %   what it removed) as RDF/XML to File, relative to the `save_dir`
-%   setting.  The file loads back with oro_init/1's ontologies option.
+%   setting, or an absolute path in that directory.  The file loads
+%   back with oro_init/1's ontologies option.
 %
-%   @error permission_error(write, oro_file, File) if File is absolute
-%          or goes up out of the save directory.
+%   @error permission_error(write, oro_file, File) if File is outside
+%          the save directory, or has a `..` step.
 
 oro_save(Model0, File) :-
     oro_resolve_model(Model0, Model),
@@ -356,10 +357,22 @@ oro_save(Model0, File) :-
 
 save_path(File, Path) :-
     setting(save_dir, Dir),
-    (   is_absolute_file_name(File)
+    atomic_list_concat(Parts, /, File),
+    (   memberchk('..', Parts)
     ->  permission_error(write, oro_file, File)
-    ;   atomic_list_concat(Parts, /, File),
-        memberchk('..', Parts)
-    ->  permission_error(write, oro_file, File)
+    ;   is_absolute_file_name(File)
+    ->  (   in_directory(Dir, File)
+        ->  Path = File
+        ;   permission_error(write, oro_file, File)
+        )
     ;   directory_file_path(Dir, File, Path)
     ).
+
+in_directory(Dir, File) :-
+    absolute_file_name(Dir, Abs),
+    (   sub_atom(Abs, _, 1, 0, /)
+    ->  Prefix = Abs
+    ;   atom_concat(Abs, /, Prefix)
+    ),
+    atom_concat(Prefix, Rest, File),
+    Rest \== ''.
