@@ -109,6 +109,39 @@ test(agent_model_is_known_again,
     oro_init([db(Dir), commonsense(false)]),
     durability_names(bob, x, ["?x isOn ?y"], Seen).
 
+%   An agent named by a long IRI: its journals' names would be over
+%   the 255 bytes a file name may have; the facts must come back all
+%   the same, also from a compacted commit log.
+
+test(long_agent_name_comes_back,
+     [ setup(durability_dir(Dir)),
+       cleanup(durability_cleanup(Dir)),
+       true(Seen == [[x1], [x1], [x2]])
+     ]) :-
+    durability_long_agents(Long, Accented),
+    oro_init([db(Dir), commonsense(false)]),
+    oro_add(myself, [rdf(Long, rdf:type, oro:'Agent'),
+                     rdf(Accented, rdf:type, oro:'Agent')]),
+    oro_add(Long, ["x1 isOn y1"]),
+    oro_add(Accented, ["x2 isOn y1"]),
+    oro_init([db(Dir), commonsense(false)]),
+    durability_names(Long, x, ["?x isOn y1"], Seen1),
+    oro_persist_compact,
+    oro_init([db(Dir), commonsense(false)]),
+    durability_names(Long, x, ["?x isOn y1"], Seen2),
+    durability_names(Accented, x, ["?x isOn y1"], Seen3),
+    Seen = [Seen1, Seen2, Seen3].
+
+durability_long_agents(Long, Accented) :-
+    length(As, 300),
+    maplist(=(0'a), As),
+    atom_codes(A300, As),
+    atom_concat('http://example.org/robots/', A300, Long),
+    length(Es, 40),
+    maplist(=(0'\u00e9), Es),
+    atom_codes(E40, Es),
+    atom_concat('http://example.org/', E40, Accented).
+
 test(removed_ontology_triple_stays_removed,
      [ setup(durability_dir(Dir)),
        cleanup(durability_cleanup(Dir)),

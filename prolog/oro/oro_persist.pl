@@ -4,6 +4,7 @@
             oro_persist_directory/1,    % -Directory
             oro_persist_transaction/2,  % +Action, :Goal
             oro_persist_record/1,       % +Record
+            oro_persist_note/1,         % +Record
             oro_persist_records/1,      % -Records
             oro_persist_exclude/1,      % +Graph
             oro_persist_compact/0,
@@ -222,6 +223,24 @@ commit(Log, Seq) :-
 oro_persist_record(Record) :-
     (   attached(_, _)
     ->  assertz(pending(Record))
+    ;   true
+    ).
+
+%!  oro_persist_note(+Record) is det.
+%
+%   Write Record (a ground term) to the commit log at once, flushed:
+%   it is committed with the next change that commits, before any of
+%   that change's triples can be recovered, and returned by
+%   oro_persist_records/1 after a restart.  For what must be on disk
+%   before a change depends on it, when no change may be in progress
+%   (a model's graph names, see oro_store).  A note followed by no
+%   commit is dropped on restart, as is what would have depended on
+%   it.  Nothing happens when no directory is attached.
+
+oro_persist_note(Record) :-
+    (   attached(_, Log)
+    ->  format(Log, '~k.~n', [Record]),
+        flush_output(Log)
     ;   true
     ).
 

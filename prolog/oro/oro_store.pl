@@ -36,6 +36,7 @@
 :- use_module(library(semweb/rdf_ntriples)).
 :- use_module(library(error)).
 :- use_module(library(lists)).
+:- use_module(library(apply)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
 :- use_module(oro_persist).
@@ -120,7 +121,8 @@ bench/RESULTS.md).
 
 oro_graph(Model, Layer, Graph) :-
     layer_name(Layer, Name),
-    graph_name(Model, Name, Graph).
+    model_key(Model, Key),
+    graph_name(Key, Name, Graph).
 
 %!  oro_shared_graph(+Layer, -Graph) is det.
 %
@@ -138,6 +140,40 @@ oro_shared_graph(scratch(Name), Graph) :-
 
 graph_name(Owner, Layer, Graph) :-
     atomic_list_concat(['oro:', Owner, '#', Layer], Graph).
+
+%   model_key(+Model, -Key): the name of Model in its graphs' names.
+%   With a database attached, each graph is journaled in a file named
+%   after the graph, its characters but ASCII letters, digits and `_`
+%   written as %XX (library(semweb/rdf_persistency)), and a file name
+%   has at most 255 bytes.  A model whose name would take more than
+%   200 bytes there (an agent named by a long IRI) is named by `~` and
+%   the MD5 digest of its name; the commit log remembers which model
+%   that is (model_key/2 records, see create_model/1).
+
+model_key(Model, Key) :-
+    atom_length(Model, Length),
+    (   Length =< 16                    % 16 characters: at most 192 bytes
+    ->  Key = Model
+    ;   atom_codes(Model, Codes),
+        foldl(encoded_bytes, Codes, 0, Bytes),
+        Bytes =< 200
+    ->  Key = Model
+    ;   rdf_atom_md5(Model, 1, Digest),
+        atom_concat(~, Digest, Key)
+    ).
+
+encoded_bytes(C, N0, N) :-
+    (   C < 128,
+        ( code_type(C, alnum) ; C == 0'_ )
+    ->  N is N0 + 1
+    ;   C < 0x80
+    ->  N is N0 + 3
+    ;   C < 0x800
+    ->  N is N0 + 6
+    ;   C < 0x10000
+    ->  N is N0 + 9
+    ;   N is N0 + 12
+    ).
 
 layer_name(profile(Profile), Profile).
 layer_name(mask, mask).
@@ -175,6 +211,11 @@ create_model(Model) :-
     oro_model(Model),
     !.
 create_model(Model) :-
+    model_key(Model, Key),
+    (   Key == Model
+    ->  true
+    ;   oro_persist_note(model_key(Key, Model))
+    ),
     forall(model_layer(Layer),
            ( oro_graph(Model, Layer, Graph),
              assertz(model_graph(Graph, Model, Layer))
@@ -619,8 +660,15 @@ oro_store_attach(Dir) :-
     with_mutex(oro_write,
                ( oro_persist_attach(Dir),
                  forall(ontology_graph(Graph), oro_persist_exclude(Graph)),
+                 forall(( model_graph(_, Model, profile(longterm)),
+                          model_key(Model, Key),
+                          Key \== Model
+                        ),
+                        oro_persist_note(model_key(Key, Model))),
+                 oro_persist_records(Records),
                  forall(( rdf_graph(Graph),
-                          model_graph_name(Graph, Model)
+                          model_graph_name(Graph, Key),
+                          key_model(Records, Key, Model)
                         ),
                         ( create_model(Model),
                           index_graph_names(Graph)
@@ -628,10 +676,10 @@ oro_store_attach(Dir) :-
                  schema_changed
                )).
 
-%   model_graph_name(+Graph, -Model): Graph is named by oro_graph/3
+%   model_graph_name(+Graph, -Key): Graph is named by oro_graph/3
 %   (the inverse of graph_name/3 for a model's layers).
 
-model_graph_name(Graph, Model) :-
+model_graph_name(Graph, Key) :-
     atom_concat('oro:', Rest, Graph),
     sub_atom(Rest, Before, _, After, '#'),
     sub_atom(Rest, _, After, 0, LayerName),
@@ -639,7 +687,30 @@ model_graph_name(Graph, Model) :-
     layer_name(Layer, LayerName),
     model_layer(Layer),
     !,
-    sub_atom(Rest, 0, Before, _, Model).
+    sub_atom(Rest, 0, Before, _, Key).
+
+%   key_model(+Records, +Key, -Model): the model named Key in its
+%   graphs' names (see model_key/2).
+
+key_model(Records, Key, Model) :-
+    (   sub_atom(Key, 0, 1, _, ~),
+        memberchk(model_key(Key, Model0), Records)
+    ->  Model = Model0
+    ;   Model = Key
+    ).
+
+%   The names of the models named by a digest are the records a
+%   compacted commit log keeps (oro_persist).
+
+:- multifile oro_persist:live_records/1.
+
+oro_persist:live_records(Records) :-
+    findall(model_key(Key, Model),
+            ( model_graph(_, Model, profile(longterm)),
+              model_key(Model, Key),
+              Key \== Model
+            ),
+            Records).
 
 %!  oro_store_detach is det.
 %
