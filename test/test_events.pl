@@ -1371,6 +1371,35 @@ test(unsubscribe, [ setup(oro_reset),
                     ev_get(Q, Next)
                   )),
     Got = [Present, Next].
+test(failing_watcher_dropped_alone,
+     [ setup(( oro_reset,
+               setting(oro_query:time_limit, Limit0),
+               set_setting(oro_query:time_limit, 0.2) )),
+       cleanup(set_setting(oro_query:time_limit, Limit0)),
+       true(Got == [absent, ev(s, S, [M1])])
+     ]) :-
+    % The first watcher joins three unrelated patterns: over 3,000
+    % triples its query runs over any time limit, and raises.
+    ev_iri(ev_m1, M1),
+    findall(St, ( between(1, 3000, I),
+                  format(string(St), "evn~d evp evn~d", [I, I])
+                ), Chain),
+    ev_with_queue(Q, [J, S|_],
+                  ( oro_subscribe(myself, new_instance, on_true, x,
+                                  ["?x evp ?y", "?z evp ?w", "?u evp ?v"],
+                                  ev_to_queue(Q, j), J),
+                    oro_subscribe(myself, new_instance, on_true, m,
+                                  ["?m rdf:type EvMarker"], ev_to_queue(Q, s), S),
+                    oro_add(myself, Chain),
+                    oro_add(myself, ["ev_m1 rdf:type EvMarker", "evm evp evq"]),
+                    ev_get(Q, Next),
+                    oro_watchers(myself, Watchers),
+                    (   memberchk(watcher(J, _, _, _, _, _), Watchers)
+                    ->  Present = present
+                    ;   Present = absent
+                    )
+                  )),
+    Got = [Present, Next].
 test(dedup_two_callbacks, [ setup(oro_reset),
                             true(Got == [Id, 2, [ev(a, Id, []), ev(b, Id, [])]])
                           ]) :-

@@ -1655,7 +1655,32 @@ evaluate_model(Model, Touched, Schema, Delta, Incremental-Index) :-
     ),
     by_registration(Ids0, Ids),
     debug(oro(events), 'Change of ~q: ~q', [Model, watchers(Ids)]),
-    forall(member(Id, Ids), evaluate_watcher(Id, Mode, Schema)).
+    forall(member(Id, Ids), guarded_evaluation(Id, Mode, Schema)).
+
+%   guarded_evaluation(+Id, +Mode, +Schema): evaluate_watcher/3, for
+%   one watcher alone.  A watcher whose evaluation raises an error (its
+%   query ran over the `oro_query:time_limit`, say: a pattern joining
+%   unrelated variables over a large store) is dropped, and the server
+%   says so in its log; the other watchers of the change are evaluated
+%   as usual.  Kept, it would raise again at each change, and hold up
+%   every other subscriber's events for as long each time.
+
+guarded_evaluation(Id, Mode, Schema) :-
+    catch(evaluate_watcher(Id, Mode, Schema), E,
+          watcher_failed(Id, E)).
+
+watcher_failed(Id, E) :-
+    (   ( E == '$aborted' ; E = unwind(_) )
+    ->  throw(E)
+    ;   print_message(warning, oro_watcher_dropped(Id)),
+        print_message(warning, E),
+        drop_watcher(Id)
+    ).
+
+:- multifile prolog:message//1.
+
+prolog:message(oro_watcher_dropped(Id)) -->
+    [ 'Event ~w dropped: its evaluation raised the error below'-[Id] ].
 
 %   model_delta(+Model, +Delta, -Added, -Removed, -Same): the triples
 %   of Delta added to and removed from Model, as ordered sets of
