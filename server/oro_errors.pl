@@ -85,6 +85,9 @@ error_table(syntax_error(oro_statement_variable(Text)), illegal_statement,
 error_table(syntax_error(oro_statement_incomplete(Text)), illegal_statement,
             'A complete statement is expected here, not a pattern: ~w.',
             [Text]).
+error_table(syntax_error(oro_statement_literal(Text)), illegal_statement,
+            'In ~w, the object must be a resource (a class, a property \c
+             or an individual), not a literal.', [Text]).
 error_table(syntax_error(oro_invalid_datatype(Type)), illegal_statement,
             'Invalid XML datatype! ~w is not a known datatype.', [Type]).
 error_table(syntax_error(oro_lexical_form(Lex, Type)), illegal_statement,

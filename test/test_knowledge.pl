@@ -47,6 +47,19 @@ knowledge_tmp_dir(Dir) :-
                  *              ADD             *
                  *******************************/
 
+%   knowledge_refused(+Statement, -Refused): adding Statement with
+%   `horse rdf:type Animal` raised the error of a misplaced literal.
+
+knowledge_refused(Statement, Refused) :-
+    catch(( oro_add(myself, ["horse rdf:type Animal", Statement]),
+            Refused = false
+          ),
+          error(syntax_error(oro_statement_literal(_)), _),
+          Refused = true).
+
+knowledge_holds(Statement, Holds) :-
+    test_bool(oro_check(myself, [Statement]), Holds).
+
 :- begin_tests(add).
 
 test(text_statements, [setup(knowledge_testsuite)]) :-
@@ -91,6 +104,31 @@ test(incomplete_batch_changes_nothing, [setup(knowledge_testsuite), fail]) :-
           error(syntax_error(_), _),
           true),
     oro_check(myself, ["horse rdf:type Animal"]).
+test(literal_as_class,
+     [ setup(knowledge_testsuite),
+       error(syntax_error(oro_statement_literal("Fork rdfs:subClassOf \"x\"")))
+     ]) :-
+    oro_add(myself, ["horse rdf:type Animal", "Fork rdfs:subClassOf \"x\""]).
+test(literal_refused_everywhere_it_needs_a_resource,
+     [ setup(knowledge_testsuite),
+       true(Refused == [true, true, true, true, true, true])
+     ]) :-
+    maplist(knowledge_refused,
+            [ "isOn rdfs:subPropertyOf \"y\"", "fork1 rdf:type \"x\"",
+              "fork1 owl:sameAs 3", "Fork owl:equivalentClass \"x\"",
+              "isOn owl:equivalentProperty \"x\"", "eats rdfs:range 12"
+            ], Refused0),
+    (   oro_check(myself, ["horse rdf:type Animal"])
+    ->  Refused = [horse_added|Refused0]
+    ;   Refused = Refused0
+    ).
+test(literal_where_a_literal_may_be,
+     [ setup(knowledge_testsuite),
+       true(Kept == [true, true])
+     ]) :-
+    oro_add(myself, ["gorilla rdfs:label \"king\"", "gorilla age 13"]),
+    maplist(knowledge_holds, ["gorilla rdfs:label \"king\"", "gorilla age 13"],
+            Kept).
 test(not_a_statement, [ setup(knowledge_testsuite),
                         error(type_error(oro_statement, foo(a)))
                       ]) :-

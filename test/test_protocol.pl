@@ -1080,6 +1080,21 @@ test(malformed_batch_changes_nothing,
                  check-['[fish rdf:type Animal]']
                ],
                Replies).
+test(literal_as_class,
+     [ setup(srv_fresh),
+       true(Replies == [ error("laas.openrobots.ontology.exceptions.IllegalStatementException",
+                               "In Fork rdfs:subClassOf \"x\", the object must be \c
+                                a resource (a class, a property or an \c
+                                individual), not a literal."),
+                         ok("false"),
+                         ok("{\"owl:Thing\":\"Thing\"}")
+                       ])
+     ]) :-
+    test_calls([ add-['[horse rdf:type Animal, Fork rdfs:subClassOf "x"]'],
+                 check-['[horse rdf:type Animal]'],
+                 getDirectSuperclassesOf-['Animal']
+               ],
+               Replies).
 test(unterminated_quote,
      [ setup(srv_fresh),
        true(Replies == [Illegal, Illegal, ok("false"), ok("\"oro-server 0.8.2\"")])

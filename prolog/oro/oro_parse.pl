@@ -52,6 +52,7 @@ Errors are ISO-shaped, `error(Formal, _)`:
   | `type_error(oro_statement, Stmt)`             | a token with an unterminated quote (`a b "c`), or an object opening with a quote that is no literal (`"a"b`) |
   | `syntax_error(oro_invalid_datatype(Type))`    | an unknown `xsd:` datatype, or an empty one |
   | `syntax_error(oro_lexical_form(Lex, Type))`   | a lexical form its datatype rejects |
+  | `syntax_error(oro_statement_literal(Stmt))`   | a literal object of a predicate that needs a resource (oro_complete_statements/2) |
 
 Texts inside error terms are strings.
 
@@ -1500,28 +1501,72 @@ oro_statements(Statements, Triples, Bindings) :-
 %!  oro_complete_statements(+Statements, -Triples) is det.
 %
 %   As oro_statements/3, for Statements that must all be complete (no
-%   variable): the statements a change asserts, or a hypothesis.
+%   variable) and make sense as facts: the statements a change asserts,
+%   or a hypothesis.  A literal cannot be the object of a predicate of
+%   RDF, RDFS or OWL whose object is a class, a property or an
+%   individual (`Fork rdfs:subClassOf "x"`, `fork1 owl:sameAs 3`).
 %
 %   @error syntax_error(oro_statement_incomplete(Text)) for the first
 %          pattern, Text showing it as the client wrote it: its text,
 %          trimmed, or the light form of a term (`x ?_ y`).
+%   @error syntax_error(oro_statement_literal(Text)) for the first
+%          statement with a literal where a resource is needed.
 %   @error the errors of oro_statements/3.
 
 oro_complete_statements(Statements, Triples) :-
     oro_statements(Statements, Triples, _),
-    (   first_pattern(Statements, Triples, Statement, Triple)
+    (   first_bad(Statements, Triples, pattern, Statement, Triple)
     ->  statement_display(Statement, Triple, Text),
         throw(error(syntax_error(oro_statement_incomplete(Text)), _))
+    ;   first_bad(Statements, Triples, misplaced_literal, Statement, Triple)
+    ->  statement_display(Statement, Triple, Text),
+        throw(error(syntax_error(oro_statement_literal(Text)), _))
     ;   true
     ).
 
-first_pattern([Statement0|Statements], [Triple0|Triples],
-              Statement, Triple) :-
-    (   ground(Triple0)
-    ->  first_pattern(Statements, Triples, Statement, Triple)
-    ;   Statement = Statement0,
+first_bad([Statement0|Statements], [Triple0|Triples], Test,
+          Statement, Triple) :-
+    (   call(Test, Triple0)
+    ->  Statement = Statement0,
         Triple = Triple0
+    ;   first_bad(Statements, Triples, Test, Statement, Triple)
     ).
+
+pattern(Triple) :-
+    \+ ground(Triple).
+
+misplaced_literal(rdf(_, P, literal(_))) :-
+    resource_object(P).
+
+%   resource_object(?P): the object of P is a class, a property, an
+%   individual or a list of them, never a literal.
+
+:- rdf_meta resource_object(r).
+
+resource_object(rdf:type).
+resource_object(rdfs:subClassOf).
+resource_object(rdfs:subPropertyOf).
+resource_object(rdfs:domain).
+resource_object(rdfs:range).
+resource_object(owl:equivalentClass).
+resource_object(owl:equivalentProperty).
+resource_object(owl:sameAs).
+resource_object(owl:differentFrom).
+resource_object(owl:inverseOf).
+resource_object(owl:disjointWith).
+resource_object(owl:propertyDisjointWith).
+resource_object(owl:complementOf).
+resource_object(owl:onProperty).
+resource_object(owl:someValuesFrom).
+resource_object(owl:allValuesFrom).
+resource_object(owl:onClass).
+resource_object(owl:intersectionOf).
+resource_object(owl:unionOf).
+resource_object(owl:oneOf).
+resource_object(owl:propertyChainAxiom).
+resource_object(owl:members).
+resource_object(owl:distinctMembers).
+resource_object(owl:disjointUnionOf).
 
 %   statement_display(+Statement, +Triple, -Text): Text (a string)
 %   shows Statement to the client who gave it.
