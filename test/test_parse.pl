@@ -136,6 +136,13 @@ test(short_unicode, error(syntax_error(oro_unicode_escape("ab\\u12")))) :-
     oro_clean_value("ab\\u12", _).
 test(bad_unicode, error(syntax_error(oro_unicode_escape("\\uzz00")))) :-
     oro_clean_value("\\uzz00", _).
+test(lone_high_surrogate,
+     error(syntax_error(oro_unicode_escape("\\ud800abc")))) :-
+    oro_clean_value("\\ud800abc", _).
+test(lone_low_surrogate, error(syntax_error(oro_unicode_escape("\\udc00")))) :-
+    oro_clean_value("\\udc00", _).
+test(reversed_pair, error(syntax_error(oro_unicode_escape(_)))) :-
+    oro_clean_value("\\uDE00\\uD83D", _).
 test(not_text, error(type_error(text, f(x)))) :-
     oro_clean_value(f(x), _).
 
@@ -395,6 +402,10 @@ test(non_negative, true(O == L)) :-
 test(decimal, true(O == L)) :-
     obj("-1.50^^xsd:decimal", O),
     test_literal(xsd:decimal, '-1.50', L).
+test(decimal_integer_forms, true(Os == Ls)) :-
+    maplist(obj, ["1^^xsd:decimal", "\"-1\"^^xsd:decimal", "+7^^xsd:decimal"],
+            Os),
+    maplist(test_literal(xsd:decimal), ['1', '-1', '+7'], Ls).
 test(double_inf, true(O == L)) :-
     obj("INF^^xsd:double", O),
     test_literal(xsd:double, 'INF', L).

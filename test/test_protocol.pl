@@ -1095,6 +1095,19 @@ test(literal_as_class,
                  getDirectSuperclassesOf-['Animal']
                ],
                Replies).
+test(half_surrogate_pair,
+     [ setup(srv_fresh),
+       true(Replies == [Bad1, Bad2, ok("false")])
+     ]) :-
+    Bad1 = error("laas.openrobots.ontology.exceptions.OntologyServerException",
+                 "Unable to parse unicode value: \\ud800"),
+    Bad2 = error("laas.openrobots.ontology.exceptions.OntologyServerException",
+                 "Unable to parse unicode value:  x label \"\\ud800\""),
+    test_calls([ lookup-['\\ud800'],
+                 add-['[horse rdf:type Animal, x label "\\ud800"]'],
+                 check-['[horse rdf:type Animal]']
+               ],
+               Replies).
 test(unterminated_quote,
      [ setup(srv_fresh),
        true(Replies == [Illegal, Illegal, ok("false"), ok("\"oro-server 0.8.2\"")])

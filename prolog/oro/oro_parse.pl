@@ -332,7 +332,8 @@ count(_,    SB,  CB,  DQ,  SQ,  SB, CB, DQ, SQ).
 %   encoding a UTF-16 surrogate pair gives one character.
 %
 %   @error syntax_error(oro_unicode_escape(Text)) if a `\u` is not
-%          followed by four hexadecimal digits.
+%          followed by four hexadecimal digits, or stands for half of
+%          a surrogate pair without the other half.
 
 oro_clean_value(Text, String) :-
     must_be(text, Text),
@@ -446,6 +447,10 @@ unicode_escape(Cs, Original, [Code|Out]) :-
         Low =< 0xDFFF
     ->  Code is 0x10000 + ((Unit-0xD800) << 10) + (Low-0xDC00),
         unescape_codes(Rest2, Original, Out)
+    ;   Unit >= 0xD800,
+        Unit =< 0xDFFF                      % half a pair: no character
+    ->  string_from_text(Original, Text),
+        throw(error(syntax_error(oro_unicode_escape(Text)), _))
     ;   Code = Unit,
         unescape_codes(Rest, Original, Out)
     ).
@@ -1225,7 +1230,10 @@ lexical_ok(any, _).
 lexical_ok(boolean, Codes) :-
     memberchk(Codes, [`true`, `false`, `1`, `0`]).
 lexical_ok(decimal, Codes) :-
-    decimal_lexical(Codes, false).
+    (   decimal_lexical(Codes, false)
+    ->  true
+    ;   integer_lexical(Codes)              % "1"^^xsd:decimal
+    ).
 lexical_ok(double, Codes) :-
     (   memberchk(Codes, [`INF`, `+INF`, `-INF`, `NaN`])
     ->  true
