@@ -75,7 +75,7 @@ nothing.
            'Events a connection may have waiting to be written; a client \c
            further behind is disconnected (its watchers are released)').
 
-opt_type(port, port, nonneg).
+opt_type(port, port, between(0, 65535)).
 opt_type(host, host, atom).
 opt_type(ontology, ontology, file(read)).
 opt_type(commonsense, commonsense, boolean).
@@ -249,10 +249,17 @@ loopback(Host) :-
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
 %   oro_store_rebuild/0; every request runs in oro_store_read/1).
 %   Server is an opaque handle.
+%
+%   @error domain_error(port, Port) if Port is over 65535.
 
 oro_server_start(Options, Server) :-
     must_be(list, Options),
     option(port(Port0), Options, 6969),
+    must_be(nonneg, Port0),
+    (   Port0 =< 65535
+    ->  true
+    ;   domain_error(port, Port0)
+    ),
     option(host(Host), Options, '127.0.0.1'),
     option(commonsense(CommonSense), Options, true),
     option(robot_id(RobotId), Options, ''),

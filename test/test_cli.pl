@@ -7,6 +7,7 @@
 :- use_module(library(process)).
 :- use_module(library(readutil)).
 :- use_module(library(socket)).
+:- use_module('../server/oro_server').
 
 %!  cli_run(+Args, -ExitCode, -Output) is det.
 %
@@ -61,6 +62,11 @@ test(unknown_option, [true(Code \== 0)]) :-
     cli_run(['--bogus'], Code, _).
 test(bad_port, [true(Code \== 0)]) :-
     cli_run(['--port=abc'], Code, _).
+test(port_out_of_range, [true(Code-Said == 1-true)]) :-
+    cli_run(['--port=65537'], Code, Output),
+    test_bool(sub_string(Output, _, _, _, "0..65535"), Said).
+test(port_out_of_range_in_prolog, error(domain_error(port, 70000))) :-
+    oro_server_start([port(70000)], _).
 test(bad_rebuild_garbage, [true(Code \== 0)]) :-
     cli_run(['--rebuild-garbage=-5'], Code, _).
 test(rebuild_garbage, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
