@@ -707,7 +707,7 @@ value_key(IRI, r(IRI)).
 
 literal_key(type(Type, Lex), Key) :-
     !,
-    (   numeric_type(Type),
+    (   oro_numeric_datatype(Type, _),
         catch(atom_number(Lex, N0), _, fail),
         number(N0)
     ->  normal_number(N0, N),
@@ -745,7 +745,3 @@ boolean_lexical(true, true).
 boolean_lexical('1', true).
 boolean_lexical(false, false).
 boolean_lexical('0', false).
-
-numeric_type(Type) :-
-    oro_numeric_datatype(Type, _),
-    !.

@@ -1205,11 +1205,13 @@ collect_dropped :-
 %   an abort (the process halting) ends it quietly.
 
 handle_error(E) :-
-    (   E == '$aborted'
+    rethrow_abort(E),
+    print_message(error, E).
+
+rethrow_abort(E) :-
+    (   ( E == '$aborted' ; E = unwind(_) )
     ->  throw(E)
-    ;   E = unwind(_)
-    ->  throw(E)
-    ;   print_message(error, E)
+    ;   true
     ).
 
 handle(change(Snapshot, Touched, Schema, Delta)) :-
@@ -1670,12 +1672,10 @@ guarded_evaluation(Id, Mode, Schema) :-
           watcher_failed(Id, E)).
 
 watcher_failed(Id, E) :-
-    (   ( E == '$aborted' ; E = unwind(_) )
-    ->  throw(E)
-    ;   print_message(warning, oro_watcher_dropped(Id)),
-        print_message(warning, E),
-        drop_watcher(Id)
-    ).
+    rethrow_abort(E),
+    print_message(warning, oro_watcher_dropped(Id)),
+    print_message(warning, E),
+    drop_watcher(Id).
 
 :- multifile prolog:message//1.
 

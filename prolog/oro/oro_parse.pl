@@ -1514,37 +1514,40 @@ oro_statements(Statements, Triples, Bindings) :-
 %   RDF, RDFS or OWL whose object is a class, a property or an
 %   individual (`Fork rdfs:subClassOf "x"`, `fork1 owl:sameAs 3`).
 %
-%   @error syntax_error(oro_statement_incomplete(Text)) for the first
-%          pattern, Text showing it as the client wrote it: its text,
-%          trimmed, or the light form of a term (`x ?_ y`).
-%   @error syntax_error(oro_statement_literal(Text)) for the first
-%          statement with a literal where a resource is needed.
+%   @error syntax_error(oro_statement_incomplete(Text)) if the first
+%          of them that is not a fact is a pattern, Text showing it as
+%          the client wrote it: its text, trimmed, or the light form of
+%          a term (`x ?_ y`).
+%   @error syntax_error(oro_statement_literal(Text)) if it has a
+%          literal where a resource is needed.
 %   @error the errors of oro_statements/3.
 
 oro_complete_statements(Statements, Triples) :-
     oro_statements(Statements, Triples, _),
-    (   first_bad(Statements, Triples, pattern, Statement, Triple)
+    (   first_bad(Statements, Triples, Statement, Triple, Kind)
     ->  statement_display(Statement, Triple, Text),
-        throw(error(syntax_error(oro_statement_incomplete(Text)), _))
-    ;   first_bad(Statements, Triples, misplaced_literal, Statement, Triple)
-    ->  statement_display(Statement, Triple, Text),
-        throw(error(syntax_error(oro_statement_literal(Text)), _))
+        bad_statement(Kind, Text, Formal),
+        throw(error(syntax_error(Formal), _))
     ;   true
     ).
 
-first_bad([Statement0|Statements], [Triple0|Triples], Test,
-          Statement, Triple) :-
-    (   call(Test, Triple0)
+first_bad([Statement0|Statements], [Triple0|Triples],
+          Statement, Triple, Kind) :-
+    (   bad_triple(Triple0, Kind0)
     ->  Statement = Statement0,
-        Triple = Triple0
-    ;   first_bad(Statements, Triples, Test, Statement, Triple)
+        Triple = Triple0,
+        Kind = Kind0
+    ;   first_bad(Statements, Triples, Statement, Triple, Kind)
     ).
 
-pattern(Triple) :-
-    \+ ground(Triple).
-
-misplaced_literal(rdf(_, P, literal(_))) :-
+bad_triple(Triple, pattern) :-
+    \+ ground(Triple),
+    !.
+bad_triple(rdf(_, P, literal(_)), literal) :-
     resource_object(P).
+
+bad_statement(pattern, Text, oro_statement_incomplete(Text)).
+bad_statement(literal, Text, oro_statement_literal(Text)).
 
 %   resource_object(?P): the object of P is a class, a property, an
 %   individual or a list of them, never a literal.

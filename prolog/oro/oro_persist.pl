@@ -232,8 +232,8 @@ oro_persist_record(Record) :-
 %   it is committed with the next change that commits, before any of
 %   that change's triples can be recovered, and returned by
 %   oro_persist_records/1 after a restart.  For what must be on disk
-%   before a change depends on it, when no change may be in progress
-%   (a model's graph names, see oro_store).  A note followed by no
+%   before any change depends on it, whether a change is in progress or
+%   not (a model's graph names, see oro_store).  A note followed by no
 %   commit is dropped on restart, as is what would have depended on
 %   it.  Nothing happens when no directory is attached.
 

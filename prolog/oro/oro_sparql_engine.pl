@@ -122,7 +122,6 @@ character offset in the query text.
     boolean_term(+, o),
     xsd_string(r),
     xsd_boolean(r),
-    numeric_type(r, -),
     kind_type(?, r),
     date_type(r),
     cast_type(r, -),
@@ -1954,9 +1953,6 @@ kind_type(decimal, xsd:decimal).
 kind_type(float,   xsd:float).
 kind_type(double,  xsd:double).
 
-numeric_type(Type, Kind) :-
-    oro_numeric_datatype(Type, Kind).
-
 date_type(xsd:dateTime).
 date_type(xsd:date).
 
@@ -3076,7 +3072,7 @@ ebv_class(number(_, N), B) :-
     ;   B = true
     ).
 ebv_class(invalid(T, _), false) :-
-    (   numeric_type(T, _)
+    (   oro_numeric_datatype(T, _)
     ->  true
     ;   rdf_equal(T, xsd:boolean)
     ).
@@ -3099,7 +3095,7 @@ value_class(X, C) :-
 literal_class(type(T, Lex0), C) :-
     !,
     lexical_atom(Lex0, Lex),
-    (   numeric_type(T, Kind)
+    (   oro_numeric_datatype(T, Kind)
     ->  (   lexical_number(Kind, Lex, N)
         ->  C = number(Kind, N)
         ;   C = invalid(T, Lex)

@@ -116,12 +116,20 @@ bench/RESULTS.md).
 %
 %   The rdf_db graph holding Layer of Model.  Layer is `mask` or
 %   profile(Profile) with Profile one of `longterm`, `shortterm` or
-%   `episodic`.  With oro_shared_graph/2, the only predicate that
-%   spells graph names (through graph_name/3).
+%   `episodic`.  The graphs of an existing model are those named when
+%   it was created (create_model/1).  Graph names are spelled by
+%   graph_name/3 alone, through model_graph_of/3 for a model's and
+%   oro_shared_graph/2 for the others.
 
 oro_graph(Model, Layer, Graph) :-
+    (   model_graph(Graph0, Model, Layer)   % named when it was created
+    ->  Graph = Graph0
+    ;   model_key(Model, Key),
+        model_graph_of(Key, Layer, Graph)
+    ).
+
+model_graph_of(Key, Layer, Graph) :-
     layer_name(Layer, Name),
-    model_key(Model, Key),
     graph_name(Key, Name, Graph).
 
 %!  oro_shared_graph(+Layer, -Graph) is det.
@@ -217,7 +225,7 @@ create_model(Model) :-
     ;   oro_persist_note(model_key(Key, Model))
     ),
     forall(model_layer(Layer),
-           ( oro_graph(Model, Layer, Graph),
+           ( model_graph_of(Key, Layer, Graph),
              assertz(model_graph(Graph, Model, Layer))
            )),
     debug(oro(store), 'Created model ~q', [Model]).
@@ -660,10 +668,7 @@ oro_store_attach(Dir) :-
     with_mutex(oro_write,
                ( oro_persist_attach(Dir),
                  forall(ontology_graph(Graph), oro_persist_exclude(Graph)),
-                 forall(( model_graph(_, Model, profile(longterm)),
-                          model_key(Model, Key),
-                          Key \== Model
-                        ),
+                 forall(digest_named(Key, Model),
                         oro_persist_note(model_key(Key, Model))),
                  oro_persist_records(Records),
                  forall(( rdf_graph(Graph),
@@ -693,11 +698,18 @@ model_graph_name(Graph, Key) :-
 %   graphs' names (see model_key/2).
 
 key_model(Records, Key, Model) :-
-    (   sub_atom(Key, 0, 1, _, ~),
-        memberchk(model_key(Key, Model0), Records)
+    (   memberchk(model_key(Key, Model0), Records)
     ->  Model = Model0
     ;   Model = Key
     ).
+
+%   digest_named(?Key, ?Model): Model exists and is named by the
+%   digest Key in its graphs' names.
+
+digest_named(Key, Model) :-
+    model_graph(_, Model, profile(longterm)),
+    model_key(Model, Key),
+    Key \== Model.
 
 %   The names of the models named by a digest are the records a
 %   compacted commit log keeps (oro_persist).
@@ -705,12 +717,7 @@ key_model(Records, Key, Model) :-
 :- multifile oro_persist:live_records/1.
 
 oro_persist:live_records(Records) :-
-    findall(model_key(Key, Model),
-            ( model_graph(_, Model, profile(longterm)),
-              model_key(Model, Key),
-              Key \== Model
-            ),
-            Records).
+    findall(model_key(Key, Model), digest_named(Key, Model), Records).
 
 %!  oro_store_detach is det.
 %
