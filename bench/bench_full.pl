@@ -32,7 +32,10 @@
     Every figure is printed with its ratio to its floor: the socket
     figures to the echo round trip, the in-process ones to one rdf/3
     probe, the loads to rdf_assert/4, the replay to as many echo round
-    trips as it sends requests.
+    trips as it sends requests.  Below the table, rdf_db's part of each
+    in-process check and find: the index lookups one call makes
+    (rdf_statistics/1), and the call's median shared among them, beside
+    one rdf/3 probe.
 
     Also: the startup with the largest world's robot part (at least
     that many triples) written as Turtle and given with
@@ -942,11 +945,24 @@ in_process_operation(Params, W, ProbeMicros, Key, Op) :-
     once(in_process_op(Key, Label, W, I, Goal, Prepare)),
     progress("size ~D: in process, ~w", [W.size, Label]),
     N is Params.samples + 5,
-    measure(N, Params, I, Goal, Prepare, _, Stats),
+    rdf_lookups(Before),
+    measure(N, Params, I, Goal, Prepare, Samples, Stats),
+    rdf_lookups(After),
+    length(Samples, Taken),
+    Lookups is (After - Before) / max(1, Taken),
     Ratio is Stats.median / ProbeMicros,
     PerSecond is 1.0e6 / Stats.median,
     Op = op{key:Key, label:Label, stats:Stats, floor:rdf_probe,
-            floor_median:ProbeMicros, ratio:Ratio, per_s:PerSecond}.
+            floor_median:ProbeMicros, ratio:Ratio, per_s:PerSecond,
+            lookups:Lookups}.
+
+%   rdf_lookups(-Count): the index lookups rdf_db has made in this
+%   process so far, all indexes together (rdf_statistics/1).  An
+%   operation's count is taken around its samples, while the world is
+%   loaded and nothing else queries the store.
+
+rdf_lookups(Count) :-
+    aggregate_all(sum(C), rdf_statistics(lookup(_, C)), Count).
 
 %   in_process_op(?Key, ?Label, +World, ?I, -Goal, -Prepare): as op/9,
 %   calling library(oro) in this process (the predicates the server's
@@ -1472,7 +1488,28 @@ print_size(S, Figures) :-
     table_rows(S, Rows),
     row(operation, median, p99, max, 'x floor', 'per second'),
     maplist(print_row, Rows),
+    print_lookups(S.in_process),
     Figures = S.put(table, Rows).
+
+%   print_lookups(+InProcess): rdf_db's part of each in-process
+%   operation: the index lookups one call makes, and the call's median
+%   shared among them, beside one bound rdf/3 probe (a lookup that
+%   enumerates several triples costs more than a probe).
+
+print_lookups(In) :-
+    say("~nrdf_db's part of the in-process operations (index lookups a \c
+         call, counted by rdf_statistics/1):~n~n", []),
+    lookup_row(operation, 'lookups a call', 'median a lookup', 'x rdf/3'),
+    forall(member(Op, In.operations),
+           ( PerLookup is Op.stats.median / max(1, Op.lookups),
+             format(string(Count), "~1f", [Op.lookups]),
+             us_text(PerLookup, PerText),
+             ratio_text(PerLookup / In.probe_us, Ratio),
+             lookup_row(Op.label, Count, PerText, Ratio)
+           )).
+
+lookup_row(Label, Count, PerLookup, Ratio) :-
+    say("~w~t~66|~w~t~17+~w~t~17+~w~n", [Label, Count, PerLookup, Ratio]).
 
 %   table_rows(+Figures, -Rows): the rows of a size's table, each a dict
 %   row{label, median_us, p99_us, max_us, floor, floor_us, ratio, per_s,
