@@ -297,6 +297,24 @@ test(prefixed_resource, [ setup(lookup_testsuite),
                           true(L == 'Thing')
                         ]) :-
     oro_label(myself, owl:'Thing', L).
+test(language_any_case, [ setup(lookup_testsuite),
+                          true(L == babouin)
+                        ]) :-
+    oro_label(myself, oro:baboon, 'FR', L).
+test(regional_label_for_language,   % "cup"@en-GB, not "Tasse"@de, for en
+     [ setup(lookup_testsuite),
+       true(L-LR == cup-cup)
+     ]) :-
+    oro_add(myself, ["cup1 rdfs:label \"Tasse\"@de",
+                     "cup1 rdfs:label \"cup\"@en-GB"]),
+    oro_label(myself, oro:cup1, L),
+    oro_label(myself, oro:cup1, 'en-US', LR).
+test(exact_tag_before_region, [ setup(lookup_testsuite),
+                                true(L == color)
+                              ]) :-
+    oro_add(myself, ["cup1 rdfs:label \"color\"@en-US",
+                     "cup1 rdfs:label \"colour\"@en-GB"]),
+    oro_label(myself, oro:cup1, 'EN-us', L).
 test(unknown, [ setup(lookup_testsuite),
                 error(existence_error(resource, _))
               ]) :-

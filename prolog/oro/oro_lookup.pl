@@ -63,8 +63,9 @@ must_exist(Model, Resource) :-
 %!  oro_label(+Model, +Resource, +Lang, -Label) is det.
 %
 %   Label is the rdfs:label of Resource in Lang (default: the
-%   `language` setting, `en`), else any of its labels, else its local
-%   name.  Label is an atom.
+%   `language` setting, `en`), else one in a variant of Lang (`en-GB`
+%   for `en`, `en` for `en-US`), else any of its labels, else its local
+%   name.  Language tags compare ignoring case.  Label is an atom.
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
@@ -80,7 +81,12 @@ label(Model, Resource, Lang, Label) :-
     rdf_equal(rdfs:label, LabelP),
     findall(L, oro_asserted(Model, Resource, LabelP, L), Labels0),
     sort(Labels0, Labels),
-    (   member(literal(lang(Lang, Text)), Labels)
+    (   member(literal(lang(Tag, Text)), Labels),
+        same_language(Tag, Lang)
+    ->  true
+    ;   member(literal(lang(Tag, Text)), Labels),
+        primary_language(Tag, Primary),
+        primary_language(Lang, Primary)
     ->  true
     ;   member(literal(L), Labels),
         L \= lang(_, _)
@@ -93,6 +99,20 @@ label(Model, Resource, Lang, Label) :-
     ),
     !,
     atomic_to_atom(Text, Label).
+
+same_language(Tag, Lang) :-
+    downcase_atom(Tag, Lower),
+    downcase_atom(Lang, Lower).
+
+%   primary_language(+Tag, -Primary): Primary is the language subtag of
+%   Tag (`en` for `en-GB`), in lower case.
+
+primary_language(Tag, Primary) :-
+    downcase_atom(Tag, Lower),
+    (   sub_atom(Lower, Before, _, _, -)
+    ->  sub_atom(Lower, 0, Before, _, Primary)
+    ;   Primary = Lower
+    ).
 
 atomic_to_atom(Text, Atom) :-
     atom_string(Atom, Text).
