@@ -454,6 +454,15 @@ test(object_property, [ setup(lookup_testsuite),
     oro_resource_details(myself, oro:eats, en, D),
     Type = D.type,
     As = D.attributes.
+test(class_and_individual,          % punning: described as the class
+     [ setup(lookup_testsuite),
+       true(Type-Names == class-['Parents', 'Children', 'Instances'])
+     ]) :-
+    oro_add(myself, ["Dog rdfs:subClassOf Animal", "Dog rdf:type Species",
+                     "rex rdf:type Dog"]),
+    oro_resource_details(myself, oro:'Dog', en, D),
+    Type = D.type,
+    findall(N, member(attribute(N, _, _), D.attributes), Names).
 test(unknown, [ setup(lookup_testsuite),
                 error(existence_error(resource, _))
               ]) :-

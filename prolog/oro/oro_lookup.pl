@@ -198,7 +198,8 @@ oro_infos(Model, Resource, Triples) :-
 %
 %     - name: its label in Lang; id: the resource;
 %     - type: `class`, `instance`, `object_property`,
-%       `datatype_property` or `undefined`;
+%       `datatype_property` or `undefined` (`class` for a class that
+%       is also an individual);
 %     - same_as: equivalent classes or owl:sameAs individuals;
 %     - attributes: for a class, its direct super-classes,
 %       sub-classes and instances; for an individual, its direct
@@ -211,14 +212,24 @@ oro_infos(Model, Resource, Triples) :-
 oro_resource_details(Model, Resource, Lang, Details) :-
     must_exist(Model, Resource),
     label(Model, Resource, Lang, Name),
-    (   oro_resource_kind(Model, Resource, Kind)
-    ->  true
-    ;   Kind = undefined
-    ),
+    details_kind(Model, Resource, Kind),
     same_as(Model, Kind, Resource, SameAs),
     attributes(Model, Kind, Resource, Lang, Attributes),
     Details = _{name:Name, id:Resource, type:Kind,
                 same_as:SameAs, attributes:Attributes}.
+
+%   details_kind(+Model, +Resource, -Kind): the kind Resource is
+%   described as.  A class that is also an individual (punning) is
+%   described as a class, as the taxonomy and the categorization treat
+%   it.
+
+details_kind(Model, Resource, Kind) :-
+    (   oro_resource_kind(Model, Resource, class)
+    ->  Kind = class
+    ;   oro_resource_kind(Model, Resource, Kind0)
+    ->  Kind = Kind0
+    ;   Kind = undefined
+    ).
 
 same_as(Model, class, Class, Same) :-
     !,
