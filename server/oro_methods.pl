@@ -483,7 +483,8 @@ m_get_infos(Id, Infos) :-
 infos(Model, Id, list(Texts)) :-
     resource(Id, R),
     oro_infos(Model, R, Triples),
-    maplist(local_statement, Triples, Texts).
+    maplist(local_statement, Triples, Texts0),
+    list_to_set(Texts0, Texts).         % two triples may read the same
 
 local_statement(rdf(S, P, O), string(Text)) :-
     oro_term_local_text(S, ST),
@@ -732,11 +733,20 @@ find_filtered(Model, Var, Patterns, [], Values) :-
     find_values(Model, Var, Patterns, Values).
 find_filtered(Model, Var, Patterns, Filters, list(Texts)) :-
     oro_find(Model, Var, Patterns, Filters, Values),
-    maplist(term_string_value, Values, Texts).
+    distinct_texts(Values, Texts).
 
 find_values(Model, Var, Patterns, list(Texts)) :-
     oro_find(Model, Var, Patterns, Values),
-    maplist(term_string_value, Values, Texts).
+    distinct_texts(Values, Texts).
+
+%   distinct_texts(+Values, -Texts): the texts of Values, each once, as
+%   string(Text) reply values.  Distinct values can have one text
+%   (`12` and `"12"`, `"robot"@en` and `"robot"@fr`); ORO answers a set
+%   of strings.
+
+distinct_texts(Values, Texts) :-
+    maplist(term_string_value, Values, Texts0),
+    list_to_set(Texts0, Texts).
 
 m_get_infos_for_agent(Agent, Id, Infos) :-
     agent_model(Agent, Model),

@@ -564,6 +564,18 @@ test(numbers_canonical, [ setup(srv_fresh),
     test_set_call(find, [o, '[y1 v ?o]'], X1),
     test_set_call(find, [o, '[y2 v ?o]'], X2),
     Xs = [X1, X2].
+test(distinct_texts,                 % ORO answers a set of strings
+     [ setup(srv_fresh),
+       true(Replies == [ ok("[\"robot\"]"), ok("[\"12\"]"),
+                         ok("[\"robot\"]"), ok("[\"12\"]") ])
+     ]) :-
+    test_ok(add, ['[o3 rdfs:label "robot"@en, o3 rdfs:label "robot"@fr, \c
+                    o1 hasId 12, o2 hasId "12"]']),
+    test_call(find, [l, '[o3 rdfs:label ?l]'], R1),
+    test_call(findForAgent, [myself, v, '[?x hasId ?v]'], R2),
+    test_call(findForAgent, [myself, l, '[o3 rdfs:label ?l]', '[true]'], R3),
+    test_call(find, ['[?v]', '[?x hasId ?v]', '[true]', '[]'], R4),
+    Replies = [R1, R2, R3, R4].
 
 :- end_tests(srv_find).
 
@@ -837,6 +849,12 @@ test(get_infos_subject_only, true(Others == [])) :-
 test(get_infos_prefixed, true(Prefixed == Plain)) :-
     test_set_call(getInfos, [baboon], Plain),
     test_set_call(getInfos, ['oro:baboon'], Prefixed).
+test(get_infos_distinct_texts,      % labels in two languages, one text
+     [ setup(srv_fresh),
+       true(Reply == ok("[\"o3 label robot\"]"))
+     ]) :-
+    test_ok(add, ['[o3 rdfs:label "robot"@en, o3 rdfs:label "robot"@fr]']),
+    test_call(getInfos, [o3], Reply).
 test(about_alias, true(About == Infos)) :-
     test_set_call(getInfos, [baboon], Infos),
     test_set_call(about, [baboon], About).
