@@ -885,7 +885,7 @@ end_connection(Sink, Why) :-
 event_content([], void) :-
     !.
 event_content(Values, list(Texts)) :-
-    maplist(term_string_value, Values, Texts).
+    distinct_texts(Values, Texts).
 
 %!  oro_connection_closed(+Context) is det.
 %

@@ -448,6 +448,13 @@ test(on_true_batch_one_event, [ setup(ev_fresh),
              [ add-["[m1 rdf:type Monkey, m2 rdf:type Monkey]"]
              ], [Events0]),
     maplist(ev_parsed, Events0, Events).
+test(on_true_one_text_once,          % "robot"@en and "robot"@fr
+     [ setup(ev_fresh),
+       true(Events == [[w-"[\"robot\"]"]])
+     ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["l", "[o3 rdfs:label ?l]"],
+             [ add-["[o3 rdfs:label \"robot\"@en, o3 rdfs:label \"robot\"@fr]"]
+             ], Events).
 test(on_false, [ setup(ev_fresh),
                  true(Events == [[], [], [w-"[\"coco\"]"], [w-"[\"gorilla\"]"]])
                ]) :-
