@@ -593,12 +593,14 @@ st_gc_miss(Triples, Miss) :-
     ).
 
 %   st_gc_hammer(+Passes): run rdf_gc/0 until a `done` message comes,
-%   at most Passes times.
+%   at most Passes times; after the last pass, wait for `done` (the
+%   message is sent to this thread, which must still exist).
 
-st_gc_hammer(Passes) :-
-    (   Passes =:= 0
-    ;   thread_peek_message(done)
-    ),
+st_gc_hammer(0) :-
+    !,
+    thread_get_message(done).
+st_gc_hammer(_) :-
+    thread_peek_message(done),
     !.
 st_gc_hammer(Passes) :-
     rdf_gc,
