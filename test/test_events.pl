@@ -448,6 +448,13 @@ test(on_true_batch_one_event, [ setup(ev_fresh),
              [ add-["[m1 rdf:type Monkey, m2 rdf:type Monkey]"]
              ], [Events0]),
     maplist(ev_parsed, Events0, Events).
+test(type_only_class_as_sub_class,   % a new class, only used as a type
+     [ setup(ev_fresh),                 % (so is EvMarker, of ev_marker/2)
+       true(Events == [[w-"[\"Gizmo\"]", w-"[\"EvMarker\"]"]])
+     ]) :-
+    ev_watch("NEW_INSTANCE", "ON_TRUE", ["c", "[?c rdfs:subClassOf owl:Thing]"],
+             [ add-["[x2 rdf:type Gizmo]"]
+             ], Events).
 test(on_true_one_text_once,          % "robot"@en and "robot"@fr
      [ setup(ev_fresh),
        true(Events == [[w-"[\"robot\"]"]])

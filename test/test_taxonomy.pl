@@ -29,6 +29,14 @@ taxonomy(Pred, Name, Names) :-
     call(Goal, myself, IRI, IRIs),
     test_names(IRIs, Names).
 
+%   truth(:Goal, -Truth): Truth is `true` if Goal succeeds, else `false`.
+
+truth(Goal, Truth) :-
+    (   call(Goal)
+    ->  Truth = true
+    ;   Truth = false
+    ).
+
 %   taxonomy_labelled(+Pred, +Name, -Pairs): Id-Label pairs, as the
 %   ORO protocol answers them (a map of ids to labels).
 
@@ -94,6 +102,25 @@ test(equivalent_same_level, [ setup(taxonomy_insects),
                             ]) :-
     oro_add(myself, ["Ape owl:equivalentClass Monkey"]),
     taxonomy(direct_subclasses, 'Animal', Cs).
+test(type_only_class_under_thing,    % a class only used as a type
+     [ setup(taxonomy_insects),
+       true(In-Direct == true-true)
+     ]) :-
+    oro_add(myself, ["x1 rdf:type Gadget"]),
+    taxonomy(subclasses, 'owl:Thing', Cs),
+    taxonomy(direct_subclasses, 'owl:Thing', Ds),
+    truth(memberchk('Gadget', Cs), In),
+    truth(memberchk('Gadget', Ds), Direct).
+test(type_only_class_found_as_sub_class,
+     [ setup(taxonomy_insects),
+       true(In-Self == true-['Gadget'])
+     ]) :-
+    oro_add(myself, ["x1 rdf:type Gadget"]),
+    oro_find(myself, c, ["?c rdfs:subClassOf owl:Thing"], Cs0),
+    test_names(Cs0, Cs),
+    truth(memberchk('Gadget', Cs), In),
+    oro_find(myself, c, ["?c rdfs:subClassOf Gadget"], Self0),
+    test_names(Self0, Self).
 test(not_a_class, [ setup(taxonomy_insects),
                     error(existence_error(class, _))
                   ]) :-

@@ -1035,6 +1035,37 @@ sub_class_of(Key, Sub, Super) :-
     ;   s_sub(Key, Sub, Super)
     ).
 
+%   sub_class_of(+Key, +Model, ?Sub, ?Super): sub_class_of/3, also
+%   enumerating, when Sub is unbound, the classes only used as types,
+%   which s_sub/3 does not hold.
+
+sub_class_of(Key, Model, Sub, Super) :-
+    (   nonvar(Sub)
+    ->  sub_class_of(Key, Sub, Super)
+    ;   s_sub(Key, Sub, Super)
+    ;   type_only_sub(Key, Model, Sub, Super)
+    ).
+
+%   type_only_sub(+Key, +Model, -Sub, ?Super): Sub is a class of Model
+%   unknown to the schema, only used as the type of something, and
+%   Super one of its super-classes: itself or owl:Thing.
+
+type_only_sub(Key, Model, Sub, Super) :-
+    (   nonvar(Super),
+        \+ rdf_equal(owl:'Thing', Super)
+    ->  \+ s_class(Key, Super),           % only itself is below it
+        class_key(Key, Model, Super),
+        Sub = Super
+    ;   rdf_equal(rdf:type, Type),
+        findall(C, ( oro_asserted(Model, _, Type, C),
+                     \+ s_class(Key, C),
+                     \+ meta_class(C)
+                   ), Classes0),
+        sort(Classes0, Classes),
+        member(Sub, Classes),
+        sub_class_of(Key, Sub, Super)
+    ).
+
 way(Key, P, Q, Dir) :-
     (   s_has_ways(Key, P)
     ->  s_way(Key, P, Q, Dir)
@@ -1192,7 +1223,7 @@ special_holds(P, Key, Model, _, S, O) :-
     (   nonvar(S)
     ->  class_key(Key, Model, S),
         sub_class_of(Key, S, O)
-    ;   s_sub(Key, S, O)
+    ;   sub_class_of(Key, Model, S, O)
     ).
 special_holds(P, Key, _Model, _, S, O) :-
     rdf_equal(P, rdfs:subPropertyOf),
@@ -1783,11 +1814,9 @@ oro_subclass(Model, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
     schema(Model, Key),
-    (   var(Sub), var(Super)
-    ->  s_sub(Key, Sub, Super)
-    ;   nonvar(Sub), nonvar(Super)
+    (   nonvar(Sub), nonvar(Super)
     ->  once(sub_class_of(Key, Sub, Super))
-    ;   sub_class_of(Key, Sub, Super)
+    ;   sub_class_of(Key, Model, Sub, Super)
     ).
 
 %!  oro_subproperty(+Model, ?Sub, ?Super) is nondet.
@@ -1989,10 +2018,12 @@ oro_property_way(Model, Property, Implying, Dir) :-
 %   Predicates is the ordered set of predicates whose asserted triples
 %   can change the solutions of the patterns Triples in Model, through
 %   sub-properties, inverses, symmetry, transitivity, domains, ranges
-%   and owl:sameAs; it is `[any]` when any triple can (a variable
-%   predicate, a variable class, owl:Thing, a class or a property that
-%   class expressions or chains derive).  Schema changes are not
-%   covered: they can change anything.
+%   and owl:sameAs (and rdf:type for an rdfs:subClassOf pattern: a
+%   class only used as a type is a sub-class of owl:Thing); it is
+%   `[any]` when any triple can (a variable predicate, a variable
+%   class, owl:Thing, a class or a property that class expressions or
+%   chains derive).  Schema changes are not covered: they can change
+%   anything.
 
 oro_pattern_dependencies(Model, Triples, Predicates) :-
     must_be(list, Triples),
@@ -2035,10 +2066,18 @@ pattern_dependency(Key, P, O, Q) :-
     ;   s_subj_implies(Key, Q, O)
     ;   s_obj_implies(Key, Q, O)
     ).
-pattern_dependency(_, P, _, _) :-
-    (   rdf_equal(P, rdfs:subClassOf)
-    ;   rdf_equal(P, rdfs:subPropertyOf)
+pattern_dependency(Key, P, O, Q) :-
+    rdf_equal(P, rdfs:subClassOf),
+    !,
+    (   var(O)                          % a class only used as a type is
+    ->  true                            % below itself and owl:Thing
+    ;   rdf_equal(O, owl:'Thing')
+    ->  true
+    ;   \+ s_class(Key, O)
     ),
+    rdf_equal(rdf:type, Q).
+pattern_dependency(_, P, _, _) :-
+    rdf_equal(P, rdfs:subPropertyOf),
     !,
     fail.
 pattern_dependency(Key, P, _, Q) :-
