@@ -1392,15 +1392,18 @@ test(failing_watcher_dropped_alone,
        cleanup(set_setting(oro_query:time_limit, Limit0)),
        true(Got == [absent, ev(s, S, [M1])])
      ]) :-
-    % The first watcher joins three unrelated patterns: over 3,000
-    % triples its query runs over any time limit, and raises.
+    % The first watcher joins three patterns on one predicate, an
+    % EvLink (none at registration): over 3,000 triples its query runs
+    % over any time limit, and raises.
     ev_iri(ev_m1, M1),
     findall(St, ( between(1, 3000, I),
                   format(string(St), "evn~d evp evn~d", [I, I])
-                ), Chain),
+                ), Chain0),
+    Chain = ["evp rdf:type EvLink"|Chain0],
     ev_with_queue(Q, [J, S|_],
                   ( oro_subscribe(myself, new_instance, on_true, x,
-                                  ["?x evp ?y", "?z evp ?w", "?u evp ?v"],
+                                  ["?x ?p ?y", "?z ?p ?w", "?u ?p ?v",
+                                   "?p rdf:type EvLink"],
                                   ev_to_queue(Q, j), J),
                     oro_subscribe(myself, new_instance, on_true, m,
                                   ["?m rdf:type EvMarker"], ev_to_queue(Q, s), S),

@@ -513,8 +513,29 @@ test(join_stopped_at_time_limit,
     test_with_setting(
         oro_query:time_limit, 0.05,
         call_with_time_limit(30,
-                             oro_find(myself, x, ["?x ?p ?o", "?a ?b ?c"],
+                             oro_find(myself, x, ["?x ?p ?o", "?a ?p ?c"],
                                       _))).
+%   Patterns that share no variable with the one asked for only need a
+%   solution each: 60 cups, 60 humans and 60 robots are 60 values from
+%   a few hundred solutions, not 216,000 (an inference count, not a
+%   time, tells them apart).
+
+test(unlinked_patterns_checked_once,
+     [ setup(knowledge_commonsense),
+       true(N-R-None == 60-(!)-[])
+     ]) :-
+    findall(S, ( between(1, 60, I),
+                 member(C-T, [cup-'Cup', human-'Human', robot-'Robot']),
+                 format(string(S), "~w~d rdf:type ~w", [C, I, T])
+               ), Statements),
+    oro_add(myself, Statements),
+    call_with_inference_limit(
+        oro_find(myself, x, ["?x rdf:type Cup", "?h rdf:type Human",
+                             "?r rdf:type Robot"], Xs),
+        2 000 000, R),
+    length(Xs, N),
+    oro_find(myself, x, ["?x rdf:type Cup", "?h rdf:type Human",
+                         "?h rdf:type Unicorn"], None).
 test(join_without_time_limit, [ setup(knowledge_testsuite),
                                  true(Xs == [baboon])
                                ]) :-

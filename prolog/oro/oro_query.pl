@@ -8,6 +8,8 @@
 :- use_module(library(settings)).
 :- use_module(library(time)).
 :- use_module(library(pairs)).
+:- use_module(library(apply)).
+:- use_module(library(lists)).
 :- use_module(oro_reason).
 :- use_module(oro_names, [oro_resource/2, oro_object/2]).
 
@@ -139,7 +141,9 @@ oro_pattern_holds(Model, rdf(S, P, O)) :-
 %
 %   Values is the ordered set of the distinct instantiations of
 %   Template over the solutions of Patterns, leaving out those holding
-%   a blank node or an unbound variable.
+%   a blank node or an unbound variable.  The patterns that share no
+%   variable with Template, even through other patterns, are solved
+%   once, for one solution.
 %
 %   @error resource_error(oro_query_time_limit(Seconds)) past the
 %          `time_limit` setting, for two patterns or more.
@@ -149,10 +153,53 @@ oro_find_values(Model, Template, Patterns, Values) :-
     ->  normal_pattern(Pattern0, rdf(S, P, O)),
         oro_holds_bag(Model, Template, S, P, O, Values0)
     ;   deadline(Deadline),
-        findall(Template, solve(Patterns, Model, Deadline), Values0)
+        term_variables(Template, Vars),
+        linked_patterns(Vars, Patterns, Linked, Others),
+        (   forall(pattern_group(Others, Group),
+                   once(solve(Group, Model, Deadline)))
+        ->  findall(Template, solve(Linked, Model, Deadline), Values0)
+        ;   Values0 = []
+        )
     ),
     sort(Values0, Values1),
     usable_values(Values1, Values).
+
+%   linked_patterns(+Vars, +Patterns, -Linked, -Others): Linked are the
+%   patterns that share a variable with Vars, directly or through other
+%   patterns; Others share none.  The values of Template only depend on
+%   Linked: each group of Others (see pattern_group/2) only needs one
+%   solution, not one for each solution of the rest.  Enumerating them
+%   all would multiply the solutions (a find of `?x rdf:type Cup` with
+%   `?h rdf:type Human` and `?r rdf:type Robot`: cups x humans x
+%   robots).
+
+linked_patterns(Vars, Patterns, Linked, Others) :-
+    partition(shares_variable(Vars), Patterns, Direct, Rest),
+    (   Direct == []
+    ->  Linked = [],
+        Others = Rest
+    ;   term_variables(Vars-Direct, Vars1),
+        linked_patterns(Vars1, Rest, Indirect, Others),
+        append(Direct, Indirect, Linked)
+    ).
+
+shares_variable(Vars, Pattern) :-
+    term_variables(Pattern, PatternVars),
+    member(V, PatternVars),
+    member(W, Vars),
+    V == W,
+    !.
+
+%   pattern_group(+Patterns, -Group) is nondet: Group is a set of
+%   Patterns linked by their variables, and no other pattern shares a
+%   variable with it (a ground pattern is a group alone).
+
+pattern_group([Pattern|Patterns], Group) :-
+    term_variables(Pattern, Vars),
+    linked_patterns(Vars, Patterns, Linked, Others),
+    (   Group = [Pattern|Linked]
+    ;   pattern_group(Others, Group)
+    ).
 
 %   usable_values(+Values0, -Values): Values0 less the values holding
 %   a blank node or an unbound variable.  The usual value, an IRI, is
