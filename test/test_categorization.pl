@@ -220,6 +220,16 @@ test(lattice_f_e, true(G == [['e rdf:type E', 'f rdf:type F']])) :-
     cat_difference_texts(f, e, G).
 test(lattice_f_f, true(G == [])) :-
     cat_difference_texts(f, f, G).
+test(equivalent_ancestors_one_group,   % X and Y: one question, asked once
+     [ setup(oro_add(myself, [ "X owl:equivalentClass Y",
+                               "Z1 rdfs:subClassOf X", "Z2 rdfs:subClassOf X",
+                               "a1 rdf:type Z1", "b1 rdf:type Z2" ])),
+       cleanup(oro_clear(myself, ["X ?p ?o", "Z1 ?p ?o", "Z2 ?p ?o",
+                                  "a1 ?p ?o", "b1 ?p ?o"])),
+       true(G == [['a1 rdf:type Z1', 'b1 rdf:type Z2']])
+     ]) :-
+    oro_differences(myself, a1, b1, D),
+    maplist(cat_group_texts, D, G).
 test(terms_types_first,
      true(D == [ [ rdf(oro:cow, rdf:type, oro:'Animal'),
                    rdf(oro:gorilla, rdf:type, oro:'Monkey'),

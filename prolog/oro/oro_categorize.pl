@@ -145,7 +145,8 @@ oro_similarities(Model0, A0, B0, Similarities) :-
 %     - unless A and B have the same classes, for each most specific
 %       common class C that has sub-classes, the direct sub-classes of
 %       C each one belongs to (C itself if none): one group
-%       `[rdf(A, rdf:type, X)..., rdf(B, rdf:type, Y)...]`;
+%       `[rdf(A, rdf:type, X)..., rdf(B, rdf:type, Y)...]` (equivalent
+%       classes give the same group, once);
 %     - for each default-namespace property of B on which A and B
 %       differ, the values only A has and the values only B has: one
 %       group `[rdf(A, P, V)..., rdf(B, P, W)...]`.
@@ -165,7 +166,8 @@ oro_differences(Model0, A0, B0, Differences) :-
                 ( member(C, Ancestors),
                   type_group(Model, A-TypesA, B-TypesB, C, Group)
                 ),
-                TypeGroups)
+                TypeGroups0),
+        list_to_set(TypeGroups0, TypeGroups)  % equivalent ancestors: one group
     ),
     compared_properties(Model, A, B, Props),
     findall(Group,
