@@ -546,6 +546,45 @@ test(join_without_time_limit, [ setup(knowledge_testsuite),
 
 :- end_tests(find).
 
+:- begin_tests(solve).
+
+test(binds, [ setup(knowledge_testsuite),
+              all(X == ['http://kb.openrobots.org#baboon',
+                        'http://kb.openrobots.org#gorilla'])
+            ]) :-
+    distinct(X, oro_solve(myself, [rdf(X, rdf:type, oro:'Monkey')])).
+test(join, [ setup(knowledge_testsuite),
+             true(Xs == [baboon, gorilla])
+           ]) :-
+    findall(Name, ( oro_solve(myself, [ rdf(X, rdf:type, 'Monkey'),
+                                        rdf(X, rdf:type, 'Animal')
+                                      ]),
+                    oro_iri_name(X, Name)
+                  ), Names),
+    sort(Names, Xs).
+test(not_a_list, [ setup(knowledge_testsuite),
+                   error(type_error(list, foo))
+                 ]) :-
+    oro_solve(myself, foo).
+test(unbound_patterns, [ setup(knowledge_testsuite),
+                         error(instantiation_error)
+                       ]) :-
+    oro_solve(myself, _).
+test(unbound_pattern, [ setup(knowledge_testsuite),
+                        error(instantiation_error)
+                      ]) :-
+    oro_solve(myself, [_]).
+test(text_pattern, [ setup(knowledge_testsuite),
+                     error(type_error(oro_pattern, "?x rdf:type Monkey"))
+                   ]) :-
+    oro_solve(myself, ["?x rdf:type Monkey"]).
+test(not_a_triple, [ setup(knowledge_testsuite),
+                     error(type_error(oro_pattern, rdf(x, y)))
+                   ]) :-
+    oro_solve(myself, [rdf(x, y)]).
+
+:- end_tests(solve).
+
 
                  /*******************************
                  *             RESET            *
@@ -611,6 +650,115 @@ test(robot_is_myself, [setup(knowledge_commonsense)]) :-
     oro_check(myself, ["myself rdf:type Robot", "myself rdf:type Agent"]).
 
 :- end_tests(robot_id).
+
+
+                 /*******************************
+                 *          MODEL NAMES         *
+                 *******************************/
+
+/*  Every public predicate takes a model's name or alias: the questions
+    of the reasoner, the taxonomy, lookup and memory answered `default`
+    and the robot id as a model of their own, with nothing asserted in
+    it (failures and empty lists), and an unknown name the same way.
+*/
+
+:- begin_tests(model_names).
+
+knowledge_aliases :-
+    oro_init([robot_id('ROBOT')]),
+    oro_add(myself, [ "Fork rdfs:subClassOf Tableware",
+                      "fork1 rdf:type Fork",
+                      "fork1 isOn table1",
+                      "fork1 rdfs:label \"fourchette\""
+                    ]),
+    oro_add(myself, ["cup1 isOn table1"], shortterm).
+
+%   knowledge_alias_answers(+Name): the questions answer for Name what
+%   they answer for myself.
+
+knowledge_alias_answers(Name) :-
+    rdf_equal(oro:fork1, Fork1),
+    oro_type(Name, fork1, 'Tableware'),
+    oro_holds(Name, fork1, isAt, table1),
+    oro_subclass(Name, 'Fork', 'Tableware'),
+    oro_subproperty(Name, isOn, isAt),
+    oro_class(Name, 'Tableware'),
+    oro_individual(Name, fork1),
+    oro_superclasses(Name, oro:'Fork', Supers),
+    rdf_equal(oro:'Tableware', Tableware),
+    memberchk(Tableware, Supers),
+    oro_direct_superclasses(Name, oro:'Fork', [Tableware]),
+    oro_instances(Name, oro:'Tableware', [Fork1]),
+    oro_classes_of(Name, oro:fork1, Classes),
+    memberchk(Tableware, Classes),
+    oro_exists(Name, oro:fork1),
+    oro_label(Name, oro:fork1, fourchette),
+    oro_lookup(Name, "fourchette", [Fork1-instance]),
+    once(oro_resource_kind(Name, oro:fork1, instance)),
+    oro_infos(Name, oro:fork1, [_|_]),
+    oro_resource_details(Name, oro:fork1, en, Details),
+    get_dict(type, Details, instance),
+    oro_memory_deadlines(Name, [_]),
+    once(oro_solve(Name, [rdf(fork1, isAt, Place)])),
+    rdf_equal(oro:table1, Place).
+
+test(myself, [setup(knowledge_aliases)]) :-
+    knowledge_alias_answers(myself).
+test(default, [setup(knowledge_aliases)]) :-
+    knowledge_alias_answers(default).
+test(robot_id, [setup(knowledge_aliases)]) :-
+    knowledge_alias_answers('ROBOT').
+
+knowledge_model_question(M, oro_type(M, fork1, _)).
+knowledge_model_question(M, oro_holds(M, fork1, isAt, table1)).
+knowledge_model_question(M, oro_subclass(M, 'Fork', _)).
+knowledge_model_question(M, oro_subproperty(M, isOn, _)).
+knowledge_model_question(M, oro_class(M, 'Fork')).
+knowledge_model_question(M, oro_individual(M, fork1)).
+knowledge_model_question(M, oro_superclasses(M, oro:'Fork', _)).
+knowledge_model_question(M, oro_direct_superclasses(M, oro:'Fork', _)).
+knowledge_model_question(M, oro_subclasses(M, oro:'Tableware', _)).
+knowledge_model_question(M, oro_direct_subclasses(M, oro:'Tableware', _)).
+knowledge_model_question(M, oro_instances(M, oro:'Fork', _)).
+knowledge_model_question(M, oro_direct_instances(M, oro:'Fork', _)).
+knowledge_model_question(M, oro_classes_of(M, oro:fork1, _)).
+knowledge_model_question(M, oro_direct_classes_of(M, oro:fork1, _)).
+knowledge_model_question(M, oro_exists(M, oro:fork1)).
+knowledge_model_question(M, oro_label(M, oro:fork1, _)).
+knowledge_model_question(M, oro_label(M, oro:fork1, en, _)).
+knowledge_model_question(M, oro_lookup(M, "fork1", _)).
+knowledge_model_question(M, oro_resource_kind(M, oro:fork1, _)).
+knowledge_model_question(M, oro_infos(M, oro:fork1, _)).
+knowledge_model_question(M, oro_resource_details(M, oro:fork1, en, _)).
+knowledge_model_question(M, oro_memory_deadlines(M, _)).
+knowledge_model_question(M, oro_solve(M, [rdf(fork1, isAt, _)])).
+
+%   knowledge_not_raising(+Model, +Error, -Goals): the questions about
+%   Model that do not raise Error.
+
+knowledge_not_raising(Model, Error, Goals) :-
+    findall(Goal,
+            ( knowledge_model_question(Model0, Goal0),
+              copy_term(Model0-Goal0, Model-Goal),
+              \+ catch(( rdf_global_term(Goal, Expanded),
+                         ignore(Expanded),
+                         fail
+                       ),
+                       error(Error, _),
+                       true)
+            ),
+            Goals).
+
+test(unknown_model, [ setup(knowledge_aliases),
+                      true(Goals == [])
+                    ]) :-
+    knowledge_not_raising(nobody, existence_error(agent, nobody), Goals).
+test(unbound_model, [ setup(knowledge_aliases),
+                      true(Goals == [])
+                    ]) :-
+    knowledge_not_raising(_, instantiation_error, Goals).
+
+:- end_tests(model_names).
 
 
                  /*******************************

@@ -24,7 +24,9 @@ case-insensitively and exactly, against the labels (any language) and
 local names of individuals, and against the labels of classes and
 properties (their local name when they have no label).  Descriptions of
 a resource (oro_infos/3, oro_resource_details/4) are read over the
-inference closure of the model.
+inference closure of the model.  The model is a model's name or alias
+(`default`, the robot id); an unknown one raises
+existence_error(agent, Model).
 */
 
 :- setting(language, atom, en,
@@ -44,7 +46,11 @@ inference closure of the model.
 %   visible triple, or is owl:Thing, the class of every individual,
 %   which the taxonomy gives whether or not a triple names it.
 
-oro_exists(Model, Resource) :-
+oro_exists(Model0, Resource) :-
+    oro_resolve_model(Model0, Model),
+    exists(Model, Resource).
+
+exists(Model, Resource) :-
     (   rdf_equal(Resource, owl:'Thing')
     ;   oro_asserted(Model, Resource, _, _)
     ;   oro_asserted(Model, _, Resource, _)
@@ -54,7 +60,7 @@ oro_exists(Model, Resource) :-
 
 must_exist(Model, Resource) :-
     must_be(atom, Resource),
-    (   oro_exists(Model, Resource)
+    (   exists(Model, Resource)
     ->  true
     ;   existence_error(resource, Resource)
     ).
@@ -73,7 +79,8 @@ oro_label(Model, Resource, Label) :-
     setting(language, Lang),
     oro_label(Model, Resource, Lang, Label).
 
-oro_label(Model, Resource, Lang, Label) :-
+oro_label(Model0, Resource, Lang, Label) :-
+    oro_resolve_model(Model0, Model),
     must_exist(Model, Resource),
     label(Model, Resource, Lang, Label).
 
@@ -125,7 +132,8 @@ atomic_to_atom(Text, Atom) :-
 %   label and by local name; classes and properties by their labels,
 %   or by their local name when they have none.
 
-oro_lookup(Model, Text, Matches) :-
+oro_lookup(Model0, Text, Matches) :-
+    oro_resolve_model(Model0, Model),
     must_be(text, Text),
     atom_string(Atom, Text),
     findall(R, label_match(Model, Atom, R), ByLabel),
@@ -134,7 +142,7 @@ oro_lookup(Model, Text, Matches) :-
     sort(Candidates0, Candidates),
     findall(R-Kind,
             ( member(R, Candidates),
-              oro_resource_kind(Model, R, Kind),
+              resource_kind(Model, R, Kind),
               matches_as(Model, Kind, R, ByLabel)
             ),
             Matches0),
@@ -153,7 +161,7 @@ label_match(Model, Text, Resource) :-
 name_match(Model, Text, Resource) :-
     downcase_atom(Text, Lower),
     oro_named(Lower, Resource),
-    oro_exists(Model, Resource).
+    exists(Model, Resource).
 
 matches_as(_, instance, _, _) :-
     !.
@@ -169,7 +177,11 @@ matches_as(Model, _, Resource, ByLabel) :-
 %   Resource is of Kind in Model: `instance`, `class`,
 %   `object_property` or `datatype_property`.
 
-oro_resource_kind(Model, Resource, Kind) :-
+oro_resource_kind(Model0, Resource, Kind) :-
+    oro_resolve_model(Model0, Model),
+    resource_kind(Model, Resource, Kind).
+
+resource_kind(Model, Resource, Kind) :-
     (   oro_individual(Model, Resource),
         Kind = instance
     ;   oro_class(Model, Resource),
@@ -188,7 +200,8 @@ property_kind(datatype, datatype_property).
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
-oro_infos(Model, Resource, Triples) :-
+oro_infos(Model0, Resource, Triples) :-
+    oro_resolve_model(Model0, Model),
     must_exist(Model, Resource),
     findall(rdf(Resource, P, O), oro_holds(Model, Resource, P, O), Triples).
 
@@ -209,7 +222,8 @@ oro_infos(Model, Resource, Triples) :-
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
-oro_resource_details(Model, Resource, Lang, Details) :-
+oro_resource_details(Model0, Resource, Lang, Details) :-
+    oro_resolve_model(Model0, Model),
     must_exist(Model, Resource),
     label(Model, Resource, Lang, Name),
     details_kind(Model, Resource, Kind),
@@ -224,9 +238,9 @@ oro_resource_details(Model, Resource, Lang, Details) :-
 %   it.
 
 details_kind(Model, Resource, Kind) :-
-    (   oro_resource_kind(Model, Resource, class)
+    (   resource_kind(Model, Resource, class)
     ->  Kind = class
-    ;   oro_resource_kind(Model, Resource, Kind0)
+    ;   resource_kind(Model, Resource, Kind0)
     ->  Kind = Kind0
     ;   Kind = undefined
     ).

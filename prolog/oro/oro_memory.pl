@@ -122,8 +122,11 @@ set_deadline(deadline(Model, Profile, S, P, O, Deadline)) :-
 %
 %   Deadlines are the pending Deadline-rdf(S,P,O)-Profile of Model, in
 %   milliseconds since the epoch, earliest first.
+%
+%   @error existence_error(agent, Model) for an unknown model.
 
-oro_memory_deadlines(Model, Deadlines) :-
+oro_memory_deadlines(Model0, Deadlines) :-
+    oro_resolve_model(Model0, Model),
     findall(D-rdf(S, P, O)-Profile, expiry(D, Model, Profile, S, P, O),
             Deadlines0),
     keysort(Deadlines0, Deadlines).

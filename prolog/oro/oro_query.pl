@@ -10,6 +10,7 @@
 :- use_module(library(pairs)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
+:- use_module(library(error)).
 :- use_module(oro_reason).
 :- use_module(oro_names, [oro_resource/2, oro_object/2]).
 
@@ -75,9 +76,25 @@ prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
 %   Bind the variables of Patterns (a list of rdf(S,P,O)) so that every
 %   pattern holds in Model.  Solutions may repeat when several
 %   derivations exist; use oro_find_values/4 for distinct answers.
+%
+%   @error existence_error(agent, Model) for an unknown model.
+%   @error type_error(oro_pattern, Pattern) for a pattern that is not
+%          rdf(S,P,O) (text patterns are for oro_check/2 and
+%          oro_find/4, which name their variables).
 
-oro_solve(Model, Patterns) :-
-    solve(Patterns, Model, none).
+oro_solve(Model0, Patterns0) :-
+    must_be(list, Patterns0),
+    maplist(public_pattern, Patterns0, Patterns),
+    oro_model_schema(Model0, Model, Key),
+    solve_normal(Patterns, Key, Model, none).
+
+public_pattern(Pattern0, Pattern) :-
+    (   nonvar(Pattern0),
+        Pattern0 = rdf(_, _, _)
+    ->  normal_pattern(Pattern0, Pattern)
+    ;   must_be(nonvar, Pattern0),
+        type_error(oro_pattern, Pattern0)
+    ).
 
 %   solve(+Patterns, +Model, +Deadline): oro_solve/2, stopping past
 %   Deadline (see deadline/1).  The patterns' names are normalised once

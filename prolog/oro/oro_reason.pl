@@ -25,6 +25,7 @@
             oro_compile_schema/2,       % +Model, -Key
             oro_compiled_schema/2,      % +Model, -Key
             oro_shared_schema/2,        % +Model, -Key
+            oro_model_schema/3,         % +Name, -Model, -Key
             oro_schema_superclass/3,    % +Key, +Class, -Super
             oro_drop_schema/1,          % +Key
             oro_with_schemas/2,         % +ModelKeys, :Goal
@@ -194,6 +195,40 @@ schema(Model, Key) :-
     (   schema_key(Model, Gen, Key0)
     ->  Key = Key0
     ;   with_mutex(oro_schema, compile_schema_once(Model, Gen, Key))
+    ).
+
+%!  oro_model_schema(+Name, -Model, -Key) is det.
+%
+%   Model is the model Name designates (a model or an alias: `default`,
+%   the robot id), Key its schema tables, as oro_shared_schema/2 gives
+%   them.  The entry of the public predicates, which take a name as
+%   their caller wrote it.  A name that has tables for the current
+%   schema is a model (tables are compiled for models only, and a
+%   reset, which removes models, bumps the generation): it is not
+%   resolved again, so that the small questions (is x a C?) cost no
+%   more than with the model.
+%
+%   @error existence_error(agent, Name) if there is no such model.
+
+oro_model_schema(Name, Model, Key) :-
+    model_schema(Name, Model, Key).
+
+model_schema(Name, Model, Key) :-
+    (   atom(Name),
+        cached_schema(Name, Key0)
+    ->  Model = Name,
+        Key = Key0
+    ;   oro_resolve_model(Name, Model),
+        schema(Model, Key)
+    ).
+
+cached_schema(Model, Key) :-
+    (   nb_current(oro_schema_keys, Keys),
+        memberchk(Model-Key0, Keys)
+    ->  Key = Key0
+    ;   \+ oro_store_schema_pending,
+        oro_schema_generation(Gen),
+        schema_key(Model, Gen, Key)
     ).
 
 %   The tables are kept for Gen only if no schema change started while
@@ -1118,13 +1153,19 @@ push(Goal, anc(D, Goals), anc(D1, [Goal|Goals])) :-
 %   The triple S-P-O is in the inference closure of Model.  Each
 %   distinct triple is returned once; with S, P and O bound it is
 %   semidet.  Literal objects match by value (`12` matches
-%   `"12"^^xsd:integer`; strings ignore language tags).
+%   `"12"^^xsd:integer`; strings ignore language tags).  Model is a
+%   model's name or alias (`default`, the robot id), as for oro_type/3,
+%   oro_subclass/3, oro_subproperty/3, oro_class/2 and
+%   oro_individual/2 (the others of this module take a model).
+%
+%   @error existence_error(agent, Model) for an unknown model.
 
-oro_holds(Model, S0, P0, O0) :-
+oro_holds(Model0, S0, P0, O0) :-
     oro_resource(S0, S),
     oro_resource(P0, P),
     oro_object(O0, O),
-    oro_holds_normal(Model, S, P, O).
+    model_schema(Model0, Model, Key),
+    oro_holds_keyed(Key, Model, S, P, O).
 
 %!  oro_holds_normal(+Model, ?S, ?P, ?O) is nondet.
 %
@@ -1810,10 +1851,10 @@ oro_type(Model, X, Class) :-
 %   every class is a sub-class of owl:Thing.  Intersections are below
 %   their members and members of unions below the union.
 
-oro_subclass(Model, Sub0, Super0) :-
+oro_subclass(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    schema(Model, Key),
+    model_schema(Model0, Model, Key),
     (   nonvar(Sub), nonvar(Super)
     ->  once(sub_class_of(Key, Sub, Super))
     ;   sub_class_of(Key, Model, Sub, Super)
@@ -1823,10 +1864,10 @@ oro_subclass(Model, Sub0, Super0) :-
 %
 %   Sub is a (reflexive, transitive) sub-property of Super in Model.
 
-oro_subproperty(Model, Sub0, Super0) :-
+oro_subproperty(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    schema(Model, Key),
+    model_schema(Model0, _, Key),
     (   nonvar(Sub),
         \+ s_prop(Key, Sub, _)
     ->  Super = Sub
@@ -1841,9 +1882,9 @@ oro_subproperty(Model, Sub0, Super0) :-
 %   in a class expression, as a domain or range, or as the type of
 %   something.
 
-oro_class(Model, Class0) :-
+oro_class(Model0, Class0) :-
     oro_resource(Class0, Class),
-    schema(Model, Key),
+    model_schema(Model0, Model, Key),
     (   nonvar(Class)
     ->  class_key(Key, Model, Class)
     ;   findall(C, ( s_class(Key, C)
@@ -1909,9 +1950,9 @@ used_kind(_, _, Kind, Kind).
 %
 %   X is a named individual of Model (an instance of owl:Thing).
 
-oro_individual(Model, X0) :-
+oro_individual(Model0, X0) :-
     oro_resource(X0, X),
-    schema(Model, Key),
+    model_schema(Model0, Model, Key),
     individual_key(Key, Model, X).
 
 %!  oro_same_individual(+Model, +X, -Y) is multi.

@@ -29,7 +29,9 @@ lists them as `same_as`).
 
 Errors: asking for the classes of something that is a class, or the
 sub-classes or instances of something that is not a class, raises
-existence_error(class, X) or existence_error(individual, X).
+existence_error(class, X) or existence_error(individual, X).  The model
+is a model's name or alias (`default`, the robot id); an unknown one
+raises existence_error(agent, Model).
 */
 
 :- rdf_meta
@@ -47,7 +49,8 @@ existence_error(class, X) or existence_error(individual, X).
 %   Supers are all the named super-classes of Class, owl:Thing included.
 %   @error existence_error(class, Class) if Class is not a class.
 
-oro_superclasses(Model, Class, Supers) :-
+oro_superclasses(Model0, Class, Supers) :-
+    oro_resolve_model(Model0, Model),
     must_be_class(Model, Class),
     findall(S, ( oro_subclass(Model, Class, S),
                  \+ oro_subclass(Model, S, Class)     % not Class, no equivalent
@@ -58,7 +61,8 @@ oro_superclasses(Model, Class, Supers) :-
 %
 %   Supers are the most specific strict super-classes of Class.
 
-oro_direct_superclasses(Model, Class, Supers) :-
+oro_direct_superclasses(Model0, Class, Supers) :-
+    oro_resolve_model(Model0, Model),
     oro_superclasses(Model, Class, All),
     most_specific(Model, All, Supers).
 
@@ -66,7 +70,8 @@ oro_direct_superclasses(Model, Class, Supers) :-
 %
 %   Subs are all the named sub-classes of Class.
 
-oro_subclasses(Model, Class, Subs) :-
+oro_subclasses(Model0, Class, Subs) :-
+    oro_resolve_model(Model0, Model),
     must_be_class(Model, Class),
     findall(S, ( oro_subclass(Model, S, Class),
                  \+ oro_subclass(Model, Class, S)     % not Class, no equivalent
@@ -77,7 +82,8 @@ oro_subclasses(Model, Class, Subs) :-
 %
 %   Subs are the most general strict sub-classes of Class.
 
-oro_direct_subclasses(Model, Class, Subs) :-
+oro_direct_subclasses(Model0, Class, Subs) :-
+    oro_resolve_model(Model0, Model),
     oro_subclasses(Model, Class, All),
     most_general(Model, All, Subs).
 
@@ -85,7 +91,8 @@ oro_direct_subclasses(Model, Class, Subs) :-
 %
 %   Instances are all the named individuals of type Class.
 
-oro_instances(Model, Class, Instances) :-
+oro_instances(Model0, Class, Instances) :-
+    oro_resolve_model(Model0, Model),
     must_be_class(Model, Class),
     findall(X, oro_type(Model, X, Class), Xs),
     named_set(Xs, Instances).
@@ -95,7 +102,8 @@ oro_instances(Model, Class, Instances) :-
 %   Instances are the individuals of which Class is a most specific
 %   type.
 
-oro_direct_instances(Model, Class, Instances) :-
+oro_direct_instances(Model0, Class, Instances) :-
+    oro_resolve_model(Model0, Model),
     oro_instances(Model, Class, All),
     include(direct_instance(Model, Class), All, Instances).
 
@@ -110,7 +118,8 @@ direct_instance(Model, Class, X) :-
 %   @error existence_error(individual, X) if X is a class.
 %   @error existence_error(resource, X) if X is unknown.
 
-oro_classes_of(Model, X, Classes) :-
+oro_classes_of(Model0, X, Classes) :-
+    oro_resolve_model(Model0, Model),
     must_be_individual(Model, X),
     individual_classes(Model, X, Classes).
 
@@ -118,7 +127,8 @@ oro_classes_of(Model, X, Classes) :-
 %
 %   Classes are the most specific named classes of Individual.
 
-oro_direct_classes_of(Model, X, Classes) :-
+oro_direct_classes_of(Model0, X, Classes) :-
+    oro_resolve_model(Model0, Model),
     oro_classes_of(Model, X, All),
     most_specific(Model, All, Classes).
 
