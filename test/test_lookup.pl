@@ -481,3 +481,71 @@ lookup_contract_value(value(Label, R), value(Label, Id)) :-
     oro_iri_name(R, Id).
 
 :- end_tests(resource_details).
+
+
+                 /*******************************
+                 *            NAMES             *
+                 *******************************/
+
+/*  Resources are named as in statements: short, prefixed (a
+    Prefix:Local term at run time, which rdf_meta does not expand) or
+    full IRIs.  oro_exists(myself, gorilla) failed, and oro_label/3,
+    oro_infos/3 and oro_resource_details/4 raised
+    existence_error(resource, gorilla).
+*/
+
+:- begin_tests(lookup_names, [setup(lookup_kingkong)]).
+
+%   lookup_same(+Goal, +Local): call(Goal, Name, Answer) answers the
+%   same for each name of Local: short, prefixed and full (variants: a
+%   dict's tag is a fresh variable).
+
+lookup_same(Goal, Local) :-
+    oro_name_iri(Local, IRI),
+    findall(Answer, ( member(Name, [Local, oro:Local, IRI]),
+                      call(Goal, Name, Answer)
+                    ), [A, B, C]),
+    A =@= B,
+    B =@= C.
+
+lookup_exists(Name, true) :-
+    oro_exists(myself, Name).
+
+lookup_label(Name, Label) :-
+    oro_label(myself, Name, Label).
+
+lookup_label_fr(Name, Label) :-
+    oro_label(myself, Name, fr, Label).
+
+lookup_resource_kinds(Name, Kinds) :-
+    findall(Kind, oro_resource_kind(myself, Name, Kind), Kinds).
+
+lookup_resource_infos(Name, Triples) :-
+    oro_infos(myself, Name, Triples).
+
+lookup_details(Name, Details) :-
+    oro_resource_details(myself, Name, en, Details).
+
+test(exists) :-
+    lookup_same(lookup_exists, gorilla).
+test(label, true(Label == 'king kong')) :-
+    lookup_same(lookup_label, gorilla),
+    oro_label(myself, gorilla, Label).
+test(label_lang) :-
+    lookup_same(lookup_label_fr, gorilla).
+test(resource_kind, true(Kinds == [instance])) :-
+    lookup_same(lookup_resource_kinds, gorilla),
+    lookup_resource_kinds(gorilla, Kinds).
+test(infos) :-
+    lookup_same(lookup_resource_infos, gorilla).
+test(details) :-
+    lookup_same(lookup_details, gorilla).
+test(class_details) :-
+    lookup_same(lookup_details, 'Monkey').
+test(unknown_short, error(existence_error(resource, IRI))) :-
+    oro_name_iri(i_d_ont_exist, IRI),
+    oro_infos(myself, i_d_ont_exist, _).
+test(unbound, error(instantiation_error)) :-
+    oro_label(myself, _, _).
+
+:- end_tests(lookup_names).

@@ -322,3 +322,59 @@ test(header_not_looked_up, true(Matches == [])) :-
     oro_lookup(myself, "kb.openrobots.org", Matches).
 
 :- end_tests(commonsense_taxonomy).
+
+
+                 /*******************************
+                 *            NAMES             *
+                 *******************************/
+
+/*  Classes and individuals are named as in statements: short, prefixed
+    (a Prefix:Local term at run time, which rdf_meta does not expand)
+    or full IRIs.  A short individual was unknown to oro_classes_of/3
+    (existence_error(resource, fork1)), a prefixed term a type error.
+*/
+
+:- begin_tests(taxonomy_names, [setup(taxonomy_insects)]).
+
+%   taxonomy_forms(+Local, -Forms): the three names of Local.
+
+taxonomy_forms(Local, [Local, oro:Local, IRI]) :-
+    oro_name_iri(Local, IRI).
+
+%   taxonomy_same(+Pred, +Local): oro_<Pred> answers the same for each
+%   name of Local.
+
+taxonomy_same(Pred, Local) :-
+    taxonomy_forms(Local, Forms),
+    atom_concat(oro_, Pred, Goal),
+    findall(Answer, ( member(Name, Forms),
+                      call(Goal, myself, Name, Answer)
+                    ), [A, B, C]),
+    A == B,
+    B == C.
+
+test(superclasses) :-
+    taxonomy_same(superclasses, 'Ladybird').
+test(direct_superclasses) :-
+    taxonomy_same(direct_superclasses, 'Ladybird').
+test(subclasses) :-
+    taxonomy_same(subclasses, 'Animal').
+test(direct_subclasses) :-
+    taxonomy_same(direct_subclasses, 'Animal').
+test(instances) :-
+    taxonomy_same(instances, 'Monkey').
+test(direct_instances) :-
+    taxonomy_same(direct_instances, 'Monkey').
+test(classes_of, true(Names == ['Animal', 'Monkey', 'MyAnimals',
+                                'owl:Thing'])) :-
+    taxonomy_same(classes_of, gorilla),
+    oro_classes_of(myself, gorilla, Classes),
+    test_names(Classes, Names).
+test(direct_classes_of) :-
+    taxonomy_same(direct_classes_of, gorilla).
+test(unbound, error(instantiation_error)) :-
+    oro_instances(myself, _, _).
+test(not_a_name, error(type_error(oro_resource, 3))) :-
+    oro_classes_of(myself, 3, _).
+
+:- end_tests(taxonomy_names).

@@ -24,7 +24,9 @@ case-insensitively and exactly, against the labels (any language) and
 local names of individuals, and against the labels of classes and
 properties (their local name when they have no label).  Descriptions of
 a resource (oro_infos/3, oro_resource_details/4) are read over the
-inference closure of the model.  The model is a model's name or alias
+inference closure of the model.  Resources are named as in
+statements: `fork1` (the default namespace), `oro:fork1` or a full
+IRI.  The model is a model's name or alias
 (`default`, the robot id); an unknown one raises
 existence_error(agent, Model).
 */
@@ -46,8 +48,10 @@ existence_error(agent, Model).
 %   visible triple, or is owl:Thing, the class of every individual,
 %   which the taxonomy gives whether or not a triple names it.
 
-oro_exists(Model0, Resource) :-
+oro_exists(Model0, Name) :-
     oro_resolve_model(Model0, Model),
+    must_be(nonvar, Name),
+    oro_resource(Name, Resource),
     exists(Model, Resource).
 
 exists(Model, Resource) :-
@@ -58,8 +62,12 @@ exists(Model, Resource) :-
     ),
     !.
 
-must_exist(Model, Resource) :-
-    must_be(atom, Resource),
+%   must_exist(+Model, +Name, -Resource): Resource is the IRI of Name,
+%   a resource of Model.
+
+must_exist(Model, Name, Resource) :-
+    must_be(nonvar, Name),
+    oro_resource(Name, Resource),
     (   exists(Model, Resource)
     ->  true
     ;   existence_error(resource, Resource)
@@ -79,9 +87,9 @@ oro_label(Model, Resource, Label) :-
     setting(language, Lang),
     oro_label(Model, Resource, Lang, Label).
 
-oro_label(Model0, Resource, Lang, Label) :-
+oro_label(Model0, Name, Lang, Label) :-
     oro_resolve_model(Model0, Model),
-    must_exist(Model, Resource),
+    must_exist(Model, Name, Resource),
     label(Model, Resource, Lang, Label).
 
 label(Model, Resource, Lang, Label) :-
@@ -177,8 +185,10 @@ matches_as(Model, _, Resource, ByLabel) :-
 %   Resource is of Kind in Model: `instance`, `class`,
 %   `object_property` or `datatype_property`.
 
-oro_resource_kind(Model0, Resource, Kind) :-
+oro_resource_kind(Model0, Name, Kind) :-
     oro_resolve_model(Model0, Model),
+    must_be(nonvar, Name),
+    oro_resource(Name, Resource),
     resource_kind(Model, Resource, Kind).
 
 resource_kind(Model, Resource, Kind) :-
@@ -200,9 +210,9 @@ property_kind(datatype, datatype_property).
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
-oro_infos(Model0, Resource, Triples) :-
+oro_infos(Model0, Name, Triples) :-
     oro_resolve_model(Model0, Model),
-    must_exist(Model, Resource),
+    must_exist(Model, Name, Resource),
     findall(rdf(Resource, P, O), oro_holds(Model, Resource, P, O), Triples).
 
 %!  oro_resource_details(+Model, +Resource, +Lang, -Details) is det.
@@ -222,9 +232,9 @@ oro_infos(Model0, Resource, Triples) :-
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
-oro_resource_details(Model0, Resource, Lang, Details) :-
+oro_resource_details(Model0, Resource0, Lang, Details) :-
     oro_resolve_model(Model0, Model),
-    must_exist(Model, Resource),
+    must_exist(Model, Resource0, Resource),
     label(Model, Resource, Lang, Name),
     details_kind(Model, Resource, Kind),
     same_as(Model, Kind, Resource, SameAs),

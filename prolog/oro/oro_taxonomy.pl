@@ -29,7 +29,9 @@ lists them as `same_as`).
 
 Errors: asking for the classes of something that is a class, or the
 sub-classes or instances of something that is not a class, raises
-existence_error(class, X) or existence_error(individual, X).  The model
+existence_error(class, X) or existence_error(individual, X).  Classes
+and individuals are named as in statements: `'Fork'` (the default
+namespace), `oro:'Fork'` or a full IRI.  The model
 is a model's name or alias (`default`, the robot id); an unknown one
 raises existence_error(agent, Model).
 */
@@ -49,9 +51,9 @@ raises existence_error(agent, Model).
 %   Supers are all the named super-classes of Class, owl:Thing included.
 %   @error existence_error(class, Class) if Class is not a class.
 
-oro_superclasses(Model0, Class, Supers) :-
+oro_superclasses(Model0, Class0, Supers) :-
     oro_resolve_model(Model0, Model),
-    must_be_class(Model, Class),
+    must_be_class(Model, Class0, Class),
     findall(S, ( oro_subclass(Model, Class, S),
                  \+ oro_subclass(Model, S, Class)     % not Class, no equivalent
                ), Supers0),
@@ -70,9 +72,9 @@ oro_direct_superclasses(Model0, Class, Supers) :-
 %
 %   Subs are all the named sub-classes of Class.
 
-oro_subclasses(Model0, Class, Subs) :-
+oro_subclasses(Model0, Class0, Subs) :-
     oro_resolve_model(Model0, Model),
-    must_be_class(Model, Class),
+    must_be_class(Model, Class0, Class),
     findall(S, ( oro_subclass(Model, S, Class),
                  \+ oro_subclass(Model, Class, S)     % not Class, no equivalent
                ), Subs0),
@@ -91,9 +93,9 @@ oro_direct_subclasses(Model0, Class, Subs) :-
 %
 %   Instances are all the named individuals of type Class.
 
-oro_instances(Model0, Class, Instances) :-
+oro_instances(Model0, Class0, Instances) :-
     oro_resolve_model(Model0, Model),
-    must_be_class(Model, Class),
+    must_be_class(Model, Class0, Class),
     findall(X, oro_type(Model, X, Class), Xs),
     named_set(Xs, Instances).
 
@@ -102,8 +104,9 @@ oro_instances(Model0, Class, Instances) :-
 %   Instances are the individuals of which Class is a most specific
 %   type.
 
-oro_direct_instances(Model0, Class, Instances) :-
+oro_direct_instances(Model0, Class0, Instances) :-
     oro_resolve_model(Model0, Model),
+    oro_resource(Class0, Class),
     oro_instances(Model, Class, All),
     include(direct_instance(Model, Class), All, Instances).
 
@@ -118,9 +121,9 @@ direct_instance(Model, Class, X) :-
 %   @error existence_error(individual, X) if X is a class.
 %   @error existence_error(resource, X) if X is unknown.
 
-oro_classes_of(Model0, X, Classes) :-
+oro_classes_of(Model0, X0, Classes) :-
     oro_resolve_model(Model0, Model),
-    must_be_individual(Model, X),
+    must_be_individual(Model, X0, X),
     individual_classes(Model, X, Classes).
 
 %!  oro_direct_classes_of(+Model, +Individual, -Classes) is det.
@@ -141,15 +144,22 @@ individual_classes(Model, X, Classes) :-
 		 *            HELPERS           *
 		 *******************************/
 
-must_be_class(Model, Class) :-
-    must_be(atom, Class),
+%   must_be_class(+Model, +Name, -Class): Class is the IRI of Name, a
+%   class of Model.  must_be_individual(+Model, +Name, -X): X is the IRI
+%   of Name, a resource of Model that is not a class.  Names are as
+%   oro_resource/2 takes them: `'Fork'`, `oro:'Fork'` or an IRI.
+
+must_be_class(Model, Name, Class) :-
+    must_be(nonvar, Name),
+    oro_resource(Name, Class),
     (   oro_class(Model, Class)
     ->  true
     ;   existence_error(class, Class)
     ).
 
-must_be_individual(Model, X) :-
-    must_be(atom, X),
+must_be_individual(Model, Name, X) :-
+    must_be(nonvar, Name),
+    oro_resource(Name, X),
     (   oro_class(Model, X)
     ->  existence_error(individual, X)
     ;   known_resource(Model, X)
