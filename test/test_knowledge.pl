@@ -154,6 +154,77 @@ test(counts_6_animals, [ setup(knowledge_testsuite),                 % §13.4.1
 
 :- end_tests(add).
 
+/*  Literals in term statements: an rdf_db literal term is normalised as
+    the parser gives the same literal in text (the datatype named as a
+    resource, atoms for the lexical form and language tag), and checked
+    as the parser checks it.  A run-time xsd:string datatype and a
+    string lexical form leaked type errors of rdf_db (or were stored as
+    strings), literal(foo(bar)) was stored, and literal(_) leaked an
+    instantiation error of atom_number/2.
+*/
+
+:- begin_tests(term_literals).
+
+%   knowledge_term_text(?Object, ?Text): a term object and the text
+%   object of the same literal.
+
+knowledge_term_text(literal(type(xsd:string, red)), "\"red\"^^xsd:string").
+knowledge_term_text(literal(type(xsd:string, "red")), "\"red\"^^xsd:string").
+knowledge_term_text(literal(type(xsd:integer, "12")), "\"12\"^^xsd:integer").
+knowledge_term_text(literal(type(xsd:integer, 12)), "\"12\"^^xsd:integer").
+knowledge_term_text(literal(lang(en, "red cup")), "\"red cup\"@en").
+knowledge_term_text(literal(lang("en", 'red cup')), "\"red cup\"@en").
+knowledge_term_text(literal(type(oro:myType, x)), "\"x\"^^oro:myType").
+knowledge_term_text(1.0Inf, "\"INF\"^^xsd:double").
+knowledge_term_text(-1.0Inf, "\"-INF\"^^xsd:double").
+knowledge_term_text(1.5NaN, "\"NaN\"^^xsd:double").
+
+test(as_text, [ forall(knowledge_term_text(Object, Text)),
+                true(Term == Parsed)
+              ]) :-
+    oro_statements([rdf(cup1, hasColor, Object)], [Term], _),
+    format(string(Statement), "cup1 hasColor ~w", [Text]),
+    oro_statements([Statement], [Parsed], _).
+test(added, [ setup(knowledge_testsuite),
+              true(Values == [cup1])
+            ]) :-
+    knowledge_term_text(Object, _),
+    Object = literal(type(xsd:string, _)),
+    !,
+    oro_add(myself, [rdf(cup1, hasColor, Object)]),
+    test_find(myself, x, ["?x hasColor \"red\""], Values).
+test(not_a_literal, [ setup(knowledge_testsuite),
+                      error(type_error(oro_literal, literal(foo(bar))))
+                    ]) :-
+    oro_add(myself, [rdf(cup1, hasColor, literal(foo(bar)))]).
+test(nothing_added, [ setup(knowledge_testsuite),
+                      fail
+                    ]) :-
+    catch(oro_add(myself, [ rdf(cup1, rdf:type, 'Cup'),
+                            rdf(cup1, hasColor, literal(12))
+                          ]),
+          error(type_error(oro_literal, _), _),
+          true),
+    oro_check(myself, ["cup1 rdf:type Cup"]).
+test(lexical_form, [ setup(knowledge_testsuite),
+                     error(syntax_error(oro_lexical_form("abc", 'xsd:integer')))
+                   ]) :-
+    oro_add(myself, [rdf(cup1, age, literal(type(xsd:integer, abc)))]).
+test(unbound_literal, [ setup(knowledge_testsuite),
+                        error(instantiation_error)
+                      ]) :-
+    oro_find(myself, X, [rdf(X, rdfs:label, literal(_))], _).
+test(unbound_lexical_form, [ setup(knowledge_testsuite),
+                             error(instantiation_error)
+                           ]) :-
+    oro_check(myself, [rdf(gorilla, age, literal(type(xsd:int, _)))]).
+test(unbound_statement, [ setup(knowledge_testsuite),
+                          error(instantiation_error)
+                        ]) :-
+    oro_check(myself, [_]).
+
+:- end_tests(term_literals).
+
 
                  /*******************************
                  *        REMOVE AND CLEAR      *

@@ -355,24 +355,41 @@ oro_resource(Term, _) :-
 %!  oro_object(?Term, -Object) is det.
 %
 %   Normalise the object of a statement given by a Prolog programmer:
-%   an rdf_db literal term, a number (xsd:int or xsd:double), a string
-%   (xsd:string), or a resource as for oro_resource/2.
+%   an rdf_db literal term, a number (xsd:int for an integer, else
+%   xsd:double), a string (xsd:string), or a resource as for
+%   oro_resource/2.  In a literal term, the datatype is named as a
+%   resource (`xsd:integer` at run time too) and the lexical form and
+%   language tag may be strings; a number as lexical form stands for
+%   its text.  A literal term is ground: literals match by value.
+%
+%   @error instantiation_error for a literal term with a variable.
+%   @error type_error(oro_literal, Term) for a literal term that is
+%          none of literal(Lex), literal(type(Type, Lex)) and
+%          literal(lang(Lang, Lex)).
 
 oro_object(Var, Object) :-
     var(Var),
     !,
     Object = Var.
-oro_object(literal(Value), Object) :-
+oro_object(literal(Value0), Object) :-
     !,
-    Object = literal(Value).
+    (   literal_value(Value0, Value)
+    ->  Object = literal(Value)
+    ;   type_error(oro_literal, literal(Value0))
+    ).
 oro_object(N, literal(type(Type, Lex))) :-
     number(N),
     !,
     (   integer(N)
-    ->  rdf_equal(xsd:int, Type)
-    ;   rdf_equal(xsd:double, Type)
-    ),
-    atom_number(Lex, N).
+    ->  rdf_equal(xsd:int, Type),
+        atom_number(Lex, N)
+    ;   rdf_equal(xsd:double, Type),
+        (   float(N)
+        ->  F = N
+        ;   F is float(N)                   % a rational
+        ),
+        double_lexical(F, Lex)
+    ).
 oro_object(S, literal(type(Type, Lex))) :-
     string(S),
     !,
@@ -380,3 +397,53 @@ oro_object(S, literal(type(Type, Lex))) :-
     atom_string(Lex, S).
 oro_object(Term, IRI) :-
     oro_resource(Term, IRI).
+
+%   literal_value(+Value0, -Value): the value of an rdf_db literal term
+%   with atoms where rdf_db wants them and the datatype an IRI; fails
+%   for a value of no literal.
+
+literal_value(Value, _) :-
+    var(Value),
+    !,
+    instantiation_error(Value).
+literal_value(type(Type0, Lex0), type(Type, Lex)) :-
+    !,
+    must_be(nonvar, Type0),
+    oro_resource(Type0, Type),
+    literal_lexical(Lex0, Lex).
+literal_value(lang(Lang0, Lex0), lang(Lang, Lex)) :-
+    !,
+    must_be(text, Lang0),
+    atom_string(Lang, Lang0),
+    literal_lexical(Lex0, Lex).
+literal_value(Lex0, Lex) :-
+    (   atom(Lex0)
+    ;   string(Lex0)
+    ),
+    literal_lexical(Lex0, Lex).
+
+literal_lexical(Lex0, Lex) :-
+    must_be(nonvar, Lex0),
+    (   atom(Lex0)
+    ->  Lex = Lex0
+    ;   string(Lex0)
+    ->  atom_string(Lex, Lex0)
+    ;   number(Lex0)
+    ->  atom_number(Lex, Lex0)
+    ;   type_error(oro_literal, Lex0)
+    ).
+
+%   double_lexical(+Float, -Lex): the XSD lexical form of a double
+%   (INF, -INF and NaN for the special values).
+
+double_lexical(F, Lex) :-
+    float_class(F, Class),
+    (   Class == nan
+    ->  Lex = 'NaN'
+    ;   Class == infinite
+    ->  (   F > 0
+        ->  Lex = 'INF'
+        ;   Lex = '-INF'
+        )
+    ;   atom_number(Lex, F)
+    ).

@@ -1607,12 +1607,30 @@ statement_triple(Statement, rdf(S, P, O), B0, B) :-
         bind_var(S0, S, B0, B1),
         bind_var(P0, P, B1, B2),
         bind_var(O0, O, B2, B)
+    ;   var(Statement)
+    ->  instantiation_error(Statement)
     ;   Statement = rdf(S0, P0, O0)
     ->  oro_resource(S0, S),
         oro_resource(P0, P),
         oro_object(O0, O),
+        term_literal_check(O0, O),
         B = B0
     ;   type_error(oro_statement, Statement)
+    ).
+
+%   term_literal_check(+Term, +Object): a typed literal written as such
+%   in a term statement (Term, normalised as Object) has a lexical form
+%   its datatype accepts, as in a text statement (check_datatype/3).
+%   Numbers are typed as the parser types number tokens.
+
+term_literal_check(Term, Object) :-
+    (   nonvar(Term),
+        Term = literal(_),
+        Object = literal(type(Type, Lex))
+    ->  oro_iri_name(Type, TypeText),
+        atom_string(Lex, LexString),
+        check_datatype(Type, LexString, TypeText)
+    ;   true
     ).
 
 statement_text(X) :-
