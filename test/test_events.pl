@@ -1352,6 +1352,30 @@ test(subscribe_term_patterns, [ setup(oro_reset),
                     oro_add(myself, [rdf(oro:coco, rdf:type, oro:'Monkey')]),
                     ev_get(Q, Message)
                   )).
+test(term_patterns_variants_only,           % not joined by unification
+     [ setup(oro_reset),
+       true(Got == [two, ev(any, A, []), ev(m, M, [M1])])
+     ]) :-
+    ev_iri(ev_m1, M1),
+    ev_with_queue(Q, [A, T, M|_],
+                  ( oro_subscribe(myself, fact_checking, on_true, '',
+                                  [rdf(chicken, has, _)],
+                                  ev_to_queue(Q, any), A),
+                    oro_subscribe(myself, fact_checking, on_true, '',
+                                  [rdf(chicken, has, teeth)],
+                                  ev_to_queue(Q, teeth), T),
+                    oro_subscribe(myself, new_instance, on_true, m,
+                                  ["?m rdf:type EvMarker"], ev_to_queue(Q, m), M),
+                    (   A == T
+                    ->  Two = one
+                    ;   Two = two
+                    ),
+                    oro_add(myself, ["chicken has feathers"]),
+                    ev_get(Q, First),
+                    oro_add(myself, ["ev_m1 rdf:type EvMarker"]),
+                    ev_get(Q, Next)
+                  )),
+    Got = [Two, First, Next].
 test(watchers, [ setup(oro_reset),
                  true(Got == [ watcher(F, fact_checking, on_true, '', ["chicken has teeth"], 1),
                                watcher(N, new_instance, on_toggle, x, ["?x rdf:type Monkey"], 1)

@@ -653,7 +653,8 @@ depended_on(Model, P) :-
 %   `new_instance` watcher (`o` or `?o`, ignored by the other types);
 %   Patterns are statement texts or rdf/3 terms (a `new_class_instance`
 %   watcher takes one class name).  Id is the id of the watcher (a
-%   UUID atom): that of an identical watcher if one exists.  The
+%   UUID atom): that of an identical watcher (a variant) if one exists.
+%   The
 %   registry of the watcher is the Subscriber's `registry` (see
 %   oro_subscriber_create/3).
 %
@@ -1286,7 +1287,8 @@ register(_, _, _, _, Subscriber, _, _) :-
     !,
     existence_error(oro_subscriber, Subscriber).    % destroyed meanwhile
 register(Model, Registry, Spec, _, Subscriber, _, Id) :-
-    watcher(Id, Model, Registry, Spec, _),
+    watcher(Id, Model, Registry, Spec0, _),
+    Spec0 =@= Spec,                     % the same: term patterns have variables
     !,
     (   subscription(Id, Subscriber)
     ->  true
