@@ -1352,6 +1352,17 @@ test(subscribe_term_patterns, [ setup(oro_reset),
                     oro_add(myself, [rdf(oro:coco, rdf:type, oro:'Monkey')]),
                     ev_get(Q, Message)
                   )).
+test(subscribe_term_variable, [ setup(oro_reset),
+                                 true(Message == ev(t, Id, [Coco]))
+                               ]) :-
+    ev_iri(coco, Coco),
+    ev_with_queue(Q, [Id|_],
+                  ( oro_subscribe(myself, new_instance, on_true, X,
+                                  [rdf(X, rdf:type, oro:'Monkey')],
+                                  ev_to_queue(Q, t), Id),
+                    oro_add(myself, ["coco rdf:type Monkey"]),
+                    ev_get(Q, Message)
+                  )).
 test(term_patterns_variants_only,           % not joined by unification
      [ setup(oro_reset),
        true(Got == [two, ev(any, A, []), ev(m, M, [M1])])

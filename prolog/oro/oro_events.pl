@@ -650,9 +650,10 @@ depended_on(Model, P) :-
 %   Register a watcher on Model and subscribe Subscriber to it.  Type
 %   and Trigger are names as ORO spells them, in any case
 %   (`NEW_INSTANCE`, `on_true`); Var is the variable of a
-%   `new_instance` watcher (`o` or `?o`, ignored by the other types);
-%   Patterns are statement texts or rdf/3 terms (a `new_class_instance`
-%   watcher takes one class name).  Id is the id of the watcher (a
+%   `new_instance` watcher (`o` or `?o`, or with rdf/3 term patterns a
+%   Prolog variable of them; ignored by the other types); Patterns are
+%   statement texts or rdf/3 terms (a `new_class_instance` watcher takes
+%   one class name).  Id is the id of the watcher (a
 %   UUID atom): that of an identical watcher (a variant) if one exists.
 %   The
 %   registry of the watcher is the Subscriber's `registry` (see
@@ -726,7 +727,9 @@ event_trigger(Text, Trigger) :-
 
 event_var(new_instance, Var0, Var) :-
     !,
-    (   text(Var0),
+    (   var(Var0)                       % a variable of term patterns
+    ->  Var = Var0
+    ;   text(Var0),
         atom_string(A, Var0),
         normalize_space(atom(A1), A),
         (   sub_atom(A1, 0, 1, _, ?)
@@ -765,10 +768,24 @@ watcher_query(Type, _, Var, Patterns, query(Template, Triples)) :-
     catch(oro_statements(Patterns, Triples, Bindings), error(Formal, _),
           throw(error(oro_event_registration(pattern(Formal)), _))),
     (   Type == new_instance,
-        memberchk(Var=Template0, Bindings)
+        var_template(Var, Triples, Bindings, Template0)
     ->  Template = Template0
     ;   Template = none
     ).
+
+%   var_template(+Var, +Triples, +Bindings, -Template): the variable of
+%   the patterns that Var names: a variable name of text patterns, or a
+%   Prolog variable of term patterns.
+
+var_template(Var, Triples, _, Var) :-
+    var(Var),
+    !,
+    term_variables(Triples, Vars),
+    member(V, Vars),
+    V == Var,
+    !.
+var_template(Name, _, Bindings, Template) :-
+    memberchk(Name=Template, Bindings).
 
 oro_name_class(Name, Class) :-
     (   text(Name)
