@@ -1387,6 +1387,18 @@ test(term_patterns_variants_only,           % not joined by unification
                     ev_get(Q, Next)
                   )),
     Got = [Two, First, Next].
+test(callback_not_callable, [ setup(oro_reset),
+                              error(type_error(callable, 12))
+                            ]) :-
+    oro_subscribe(myself, fact_checking, on_true, '',
+                  ["chicken has teeth"], 12, _).
+test(callback_unbound, [ setup(oro_reset),
+                         error(instantiation_error)
+                       ]) :-
+    oro_subscribe(myself, fact_checking, on_true, '',
+                  ["chicken has teeth"], _, _).
+test(deliver_unbound, error(instantiation_error)) :-
+    oro_subscriber_create(_, _, []).
 test(watchers, [ setup(oro_reset),
                  true(Got == [ watcher(F, fact_checking, on_true, '', ["chicken has teeth"], 1),
                                watcher(N, new_instance, on_toggle, x, ["?x rdf:type Monkey"], 1)

@@ -909,6 +909,8 @@ is_meta_option(on_overflow).
 %   on overflow and reset).
 
 subscriber_create(Deliver, Subscriber, Options, Owner) :-
+    strip_module(Deliver, _, Goal),
+    must_be(callable, Goal),
     option(max_queue(Max), Options, 10000),
     must_be(positive_integer, Max),
     option(on_overflow(OnOverflow), Options, true),
