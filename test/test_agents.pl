@@ -239,6 +239,19 @@ test(create_agent, [ setup(agm_fresh),
     oro_create_agent(bob, Bob),
     agm_holds(bob, "myself owl:sameAs bob", In),
     agm_agents(Names).
+test(create_agent_names,                    % bob was taken for the IRI 'bob'
+     [ setup(agm_fresh),
+       true(In == [true, true, true])
+     ]) :-
+    oro_name_iri(dave, Dave),
+    findall(Holds, ( member(Model-Individual-Statement,
+                            [ bob-bob-"myself owl:sameAs bob",
+                              carol-(oro:carol)-"myself owl:sameAs carol",
+                              dave-Dave-"myself owl:sameAs dave"
+                            ]),
+                     oro_create_agent(Model, Individual),
+                     agm_holds(Model, Statement, Holds)
+                   ), In).
 
 :- end_tests(agm_models).
 

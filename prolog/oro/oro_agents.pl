@@ -95,12 +95,14 @@ oro_resolve_model_now(Name) :-
 
 %!  oro_create_agent(+Name, +Individual) is det.
 %
-%   Create the model Name of the agent Individual (an IRI): in it,
-%   `myself` is Individual, and the robot (if it has an id) is a Robot.
+%   Create the model Name of the agent Individual (named as in
+%   statements: `bob`, `oro:bob` or a full IRI): in it, `myself` is
+%   Individual, and the robot (if it has an id) is a Robot.
 
-oro_create_agent(Name, Individual) :-
+oro_create_agent(Name, Individual0) :-
     must_be(atom, Name),
-    must_be(atom, Individual),
+    must_be(nonvar, Individual0),
+    oro_resource(Individual0, Individual),
     oro_create_model(Name),
     rdf_equal(oro:myself, Myself),
     rdf_equal(owl:sameAs, SameAs),
