@@ -277,6 +277,27 @@ test(french_label, [ setup(lookup_testsuite),
                      true(L == babouin)
                    ]) :-
     oro_label(myself, oro:baboon, fr, L).
+test(french_label_string, [ setup(lookup_testsuite),          % was English
+                            true(L == babouin)
+                          ]) :-
+    oro_label(myself, oro:baboon, "fr", L).
+test(language_case, [ setup(lookup_testsuite),
+                      true(Ls == [babouin, tasse])
+                    ]) :-
+    oro_add(myself, ["cup1 rdfs:label \"tasse\"@FR",
+                     "cup1 rdfs:label \"cup\"@en"]),
+    oro_label(myself, oro:baboon, 'FR', L1),
+    oro_label(myself, oro:cup1, fr, L2),
+    Ls = [L1, L2].
+test(details_language, [ setup(lookup_testsuite),
+                         true(Name == babouin)
+                       ]) :-
+    oro_resource_details(myself, oro:baboon, "FR", Details),
+    get_dict(name, Details, Name).
+test(unbound_language, [ setup(lookup_testsuite),
+                         error(instantiation_error)
+                       ]) :-
+    oro_label(myself, oro:baboon, _, _).
 test(other_language_falls_back, [ setup(lookup_testsuite),
                                   true(L == 'baboon monkey')
                                 ]) :-

@@ -79,7 +79,8 @@ must_exist(Model, Name, Resource) :-
 %   Label is the rdfs:label of Resource in Lang (default: the
 %   `language` setting, `en`), else one in a variant of Lang (`en-GB`
 %   for `en`, `en` for `en-US`), else any of its labels, else its local
-%   name.  Language tags compare ignoring case.  Label is an atom.
+%   name.  Label is an atom.  Lang is an atom or a string; language
+%   tags compare ignoring case (`fr` finds `"tasse"@FR`).
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
@@ -87,10 +88,18 @@ oro_label(Model, Resource, Label) :-
     setting(language, Lang),
     oro_label(Model, Resource, Lang, Label).
 
-oro_label(Model0, Name, Lang, Label) :-
+oro_label(Model0, Name, Lang0, Label) :-
     oro_resolve_model(Model0, Model),
     must_exist(Model, Name, Resource),
+    language(Lang0, Lang),
     label(Model, Resource, Lang, Label).
+
+%   language(+Text, -Lang): the language tag Text, lower case.
+
+language(Text, Lang) :-
+    must_be(text, Text),
+    atom_string(Atom, Text),
+    downcase_atom(Atom, Lang).
 
 label(Model, Resource, Lang, Label) :-
     rdf_equal(rdfs:label, LabelP),
@@ -232,9 +241,10 @@ oro_infos(Model0, Name, Triples) :-
 %
 %   @error existence_error(resource, Resource) if it is unknown.
 
-oro_resource_details(Model0, Resource0, Lang, Details) :-
+oro_resource_details(Model0, Resource0, Lang0, Details) :-
     oro_resolve_model(Model0, Model),
     must_exist(Model, Resource0, Resource),
+    language(Lang0, Lang),
     label(Model, Resource, Lang, Name),
     details_kind(Model, Resource, Kind),
     same_as(Model, Kind, Resource, SameAs),
