@@ -213,6 +213,9 @@ split_local_name(IRI, Local) :-
 
 :- begin_tests(literal_text).
 
+test(unbound, error(instantiation_error)) :-    % was bound to a literal
+    oro_term_text(_, _).
+
 test(int, true(Text == '12')) :-
     test_literal(xsd:int, '12', L),
     oro_term_text(L, Text).

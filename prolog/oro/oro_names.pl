@@ -281,12 +281,16 @@ numeric_local(double,             double).
 %
 %   The text of an RDF term in find, query and taxonomy results: a
 %   contracted id for a resource, the bare lexical form for a literal.
+%
+%   @error instantiation_error if Term is a variable.
 
-oro_term_text(literal(Value), Text) :-
-    !,
-    oro_literal_lexical(literal(Value), Text).
-oro_term_text(IRI, Text) :-
-    oro_iri_name(IRI, Text).
+oro_term_text(Term, Text) :-
+    (   var(Term)
+    ->  instantiation_error(Term)
+    ;   Term = literal(Value)
+    ->  oro_literal_lexical(literal(Value), Text)
+    ;   oro_iri_name(Term, Text)
+    ).
 
 %!  oro_term_local_text(+Term, -Text) is det.
 %
