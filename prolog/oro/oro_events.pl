@@ -653,10 +653,9 @@ depended_on(Model, P) :-
 %   `new_instance` watcher (`o` or `?o`, or with rdf/3 term patterns a
 %   Prolog variable of them; ignored by the other types); Patterns are
 %   statement texts or rdf/3 terms (a `new_class_instance` watcher takes
-%   one class name).  Id is the id of the watcher (a
-%   UUID atom): that of an identical watcher (a variant) if one exists.
-%   The
-%   registry of the watcher is the Subscriber's `registry` (see
+%   one class name).  Id is the id of the watcher (a UUID atom): that
+%   of an identical watcher (a variant) if one exists.  The registry of
+%   the watcher is the Subscriber's `registry` (see
 %   oro_subscriber_create/3).
 %
 %   @error domain_error(oro_event_type, Type)
