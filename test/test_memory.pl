@@ -360,6 +360,31 @@ test(removed_then_long_term_stays, [ setup(agm_mem_fresh(20)),
     oro_add(myself, ["f p o"]),
     agm_mem_short_marker(myself, Marker),
     test_bool(agm_mem_holds(myself, "f p o"), Holds).
+test(removed_ontology_fact_short_term_forgotten,
+     [ setup(agm_mem_fresh(20)),
+       true(Holds-Outcome == true-after_deadline)
+     ]) :-
+    % Removed from the robot's model, the ontology's triple no longer
+    % lives forever there: added back as SHORTTERM, it fades.
+    oro_remove(myself, ["Human rdfs:subClassOf EmbodiedAgent"]),
+    oro_add(myself, ["Human rdfs:subClassOf EmbodiedAgent"], 'SHORTTERM'),
+    test_bool(agm_mem_holds(myself, "Human rdfs:subClassOf EmbodiedAgent"),
+              Holds),
+    agm_mem_deadline_of(myself, "Human rdfs:subClassOf EmbodiedAgent",
+                        shortterm, D),
+    agm_mem_forgotten(agm_mem_gone(myself,
+                                   "Human rdfs:subClassOf EmbodiedAgent"),
+                      D, Outcome).
+test(removed_ontology_fact_short_then_long_term_stays,
+     [ setup(agm_mem_fresh(20)),
+       true(Marker-Holds == after_deadline-true)
+     ]) :-
+    oro_remove(myself, ["Human rdfs:subClassOf EmbodiedAgent"]),
+    oro_add(myself, ["Human rdfs:subClassOf EmbodiedAgent"], 'SHORTTERM'),
+    oro_add(myself, ["Human rdfs:subClassOf EmbodiedAgent"]),
+    agm_mem_short_marker(myself, Marker),
+    test_bool(agm_mem_holds(myself, "Human rdfs:subClassOf EmbodiedAgent"),
+              Holds).
 test(refresh, [ setup(agm_mem_fresh(20)),
                 true(Outcome == after_deadline)
               ]) :-

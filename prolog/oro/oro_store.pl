@@ -420,10 +420,13 @@ oro_store_assert(Model, Triples, Profile) :-
     maplist(assert_triple(Graph, Mask, Model, Profile), Triples).
 
 %   A long-term triple is asserted unless it already lives forever (in
-%   the long-term graph or the ontology layer); a copy in a shorter
-%   profile's graph does not count.  A triple of a shorter profile goes
-%   in that profile's graph (where its lifetime is counted) unless it is
-%   already there or lives forever.
+%   the long-term graph, or in the ontology layer and not masked); a
+%   copy in a shorter profile's graph does not count.  A masked
+%   ontology triple asserted long-term is unmasked: it lives forever
+%   again.  A triple of a shorter profile goes in that profile's graph
+%   (where its lifetime is counted) unless it is already there or lives
+%   forever; a masked ontology triple stays masked, so that it goes
+%   again when its lifetime is over.
 
 assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     note_schema_change(P, O),
@@ -434,28 +437,29 @@ assert_triple(Graph, Mask, Model, Profile, rdf(S, P, O)) :-
     ).
 
 assert_known(Graph, Mask, Model, Profile, S, P, O) :-
-    (   rdf(S, P, O, Mask)
-    ->  rdf_retractall(S, P, O, Mask)
-    ;   true
-    ),
     (   Profile == longterm
-    ->  (   forever(Model, S, P, O)
+    ->  (   rdf(S, P, O, Mask)
+        ->  rdf_retractall(S, P, O, Mask)
+        ;   true
+        ),
+        (   forever(Model, Mask, S, P, O)
         ->  true
         ;   rdf_assert(S, P, O, Graph)
         )
     ;   (   rdf(S, P, O, Graph)
-        ;   forever(Model, S, P, O)
+        ;   forever(Model, Mask, S, P, O)
         )
     ->  true
     ;   rdf_assert(S, P, O, Graph)
     ).
 
-forever(Model, S, P, O) :-
+forever(Model, Mask, S, P, O) :-
     oro_graph(Model, profile(longterm), Long),
     (   rdf(S, P, O, Long)
     ->  true
     ;   ontology_graph(Onto),
-        rdf(S, P, O, Onto)
+        rdf(S, P, O, Onto),
+        \+ rdf(S, P, O, Mask)
     ->  true
     ).
 
