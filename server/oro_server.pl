@@ -80,7 +80,7 @@ opt_type(host, host, atom).
 opt_type(ontology, ontology, file(read)).
 opt_type(commonsense, commonsense, boolean).
 opt_type(robot_id, robot_id, atom).
-opt_type(time_base, time_base, nonneg).
+opt_type(time_base, time_base, natural).
 opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).

@@ -69,6 +69,12 @@ test(port_out_of_range_in_prolog, error(domain_error(port, 70000))) :-
     oro_server_start([port(70000)], _).
 test(bad_rebuild_garbage, [true(Code \== 0)]) :-
     cli_run(['--rebuild-garbage=-5'], Code, _).
+test(zero_time_base, [true(Code-Said == 1-true)]) :-
+    % A time unit of 0 ms is refused by the option parser, which names
+    % the option and says what it takes.
+    cli_run(['--time-base=0'], Code, Output),
+    test_bool(sub_string(Output, _, _, _, "--time-base=0 requires a positive integer"),
+              Said).
 test(rebuild_garbage, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
     test_cli_server(['--rebuild-garbage=0'], Port,
                     request(Port, [hello], Reply), _).
