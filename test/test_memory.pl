@@ -385,6 +385,17 @@ test(removed_ontology_fact_short_then_long_term_stays,
     agm_mem_short_marker(myself, Marker),
     test_bool(agm_mem_holds(myself, "Human rdfs:subClassOf EmbodiedAgent"),
               Holds).
+test(literal_spelled_otherwise_forgotten,
+     [ setup(agm_mem_fresh(20)),
+       true(Outcome-After == after_deadline-[cup1])
+     ]) :-
+    % rdf_db stores 0.50 as the 0.5 it already holds: the short-term
+    % fact still gets its deadline, and goes.
+    oro_add(myself, ["cup1 hasWeight 0.5"]),
+    oro_add(myself, ["cup2 hasWeight 0.50"], 'SHORTTERM'),
+    agm_mem_deadline_of(myself, "cup2 hasWeight 0.5", shortterm, D),
+    agm_mem_forgotten(agm_mem_gone(myself, "cup2 hasWeight 0.5"), D, Outcome),
+    test_find(myself, x, ["?x hasWeight ?w"], After).
 test(refresh, [ setup(agm_mem_fresh(20)),
                 true(Outcome == after_deadline)
               ]) :-

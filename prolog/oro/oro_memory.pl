@@ -17,6 +17,7 @@
 :- use_module(library(debug)).
 :- use_module(oro_store).
 :- use_module(oro_persist).
+:- use_module(oro_reason, [oro_literal_match/2]).
 :- use_module(library(rbtrees)).
 
 /** <module> Memory profiles: facts that fade
@@ -96,11 +97,12 @@ oro_memory_remember(Model, Profile, Triples) :-
     ->  now_ms(Now),
         Deadline is ceiling(Now) + Lifetime,
         oro_graph(Model, profile(Profile), Graph),
-        findall(deadline(Model, Profile, S, P, O, Deadline),
+        findall(deadline(Model, Profile, S, P, Stored, Deadline),
                 ( member(rdf(S, P, O), Triples),
-                  rdf(S, P, O, Graph)
+                  stored_triple(Graph, S, P, O, Stored)
                 ),
-                Entries),
+                Entries0),
+        sort(Entries0, Entries),
         (   Entries == []
         ->  true
         ;   maplist(oro_persist_record, Entries),
@@ -108,6 +110,22 @@ oro_memory_remember(Model, Profile, Triples) :-
             scheduler_send(schedule(Deadline, Model, Profile))
         )
     ;   true
+    ).
+
+%   stored_triple(+Graph, +S, +P, +O, -Stored): the triple S P O is in
+%   Graph as S P Stored.  rdf_db stores literals of the same value as
+%   one term, spelled as the first one asserted (`0.50` is kept as the
+%   `0.5` the store holds already), which a lookup with another
+%   spelling does not find: such a literal is looked up by value among
+%   the values of S P in Graph.
+
+stored_triple(Graph, S, P, O, Stored) :-
+    (   rdf(S, P, O, Graph)
+    ->  Stored = O
+    ;   O = literal(_)
+    ->  rdf(S, P, Stored, Graph),
+        Stored = literal(_),
+        oro_literal_match(O, Stored)
     ).
 
 %   set_deadline(+Record): Record is deadline(Model, Profile, S, P, O,
