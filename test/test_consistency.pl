@@ -484,6 +484,34 @@ test(batch_keeps_the_consistent_ones,
     maplist([S, B]>>test_bool(oro_check(myself, [S]), B),
             ["q1 rdf:type Rock", "q1 grows moss", "q2 grows moss"], Kept).
 
+%   rdf_db keeps one term for the literals of one datatype and value,
+%   spelled as the first one asserted: 0.50 is stored as the 0.5 of
+%   cup9 (hasCharacteristicWeight is functional in the common-sense
+%   ontology).
+
+test(rejected_literal_spelled_otherwise_not_kept,
+     [ setup(oro_init([])),
+       true(r(Accepted, Kept, Full) == r(false, false, true))
+     ]) :-
+    oro_add(myself, ["cup1 hasCharacteristicWeight 0.7",
+                     "cup9 hasCharacteristicWeight 0.5"]),
+    oro_safe_add(myself, ["cup1 hasCharacteristicWeight 0.50"], longterm,
+                 Accepted),
+    test_bool(oro_check(myself, ["cup1 hasCharacteristicWeight 0.5"]), Kept),
+    cons_full(Full).
+test(known_literal_spelled_otherwise_left_alone,
+     [ setup(oro_init([])),
+       true(r(Accepted, Holds, Deadlines) == r(false, true, []))
+     ]) :-
+    % Known already, the first statement is not added again (with a
+    % deadline) when the second is rejected.
+    oro_add(myself, ["cup2 hasCharacteristicWeight 0.5"]),
+    oro_safe_add(myself, ["cup2 hasCharacteristicWeight 0.50",
+                          "cup2 hasCharacteristicWeight 0.7"],
+                 'SHORTTERM', Accepted),
+    test_bool(oro_check(myself, ["cup2 hasCharacteristicWeight 0.5"]), Holds),
+    oro_memory_deadlines(myself, Deadlines).
+
 :- end_tests(consistency_incremental).
 
 

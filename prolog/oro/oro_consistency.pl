@@ -1071,7 +1071,9 @@ safe_add(Model, Triples, Profile, Accepted, Gen0) :-
     ).
 
 visible(Model, rdf(S, P, O)) :-
-    once(oro_asserted(Model, S, P, O)).
+    oro_stored_term(S, P, O, Stored),
+    oro_asserted(Model, S, P, Stored),
+    !.
 
 try_triple(Model, Profile, Triple, Kept0, Kept) :-
     (   visible(Model, Triple)

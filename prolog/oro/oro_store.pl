@@ -8,6 +8,7 @@
             oro_add_model_alias/2,      % +Alias, +Model
             oro_resolve_model/2,        % +Name, -Model
             oro_asserted/4,             % +Model, ?S, ?P, ?O
+            oro_stored_term/4,          % +S, +P, +O, -Stored
             oro_asserted_count/2,       % +Model, -Count
             oro_store_assert/3,         % +Model, +Triples, +Profile
             oro_store_retract/2,        % +Model, +Triples
@@ -490,6 +491,12 @@ oro_store_retract(Model, Triples) :-
 
 retract_triple(Model, Mask, rdf(S, P, O)) :-
     note_schema_change(P, O),
+    findall(Stored, oro_stored_term(S, P, O, Stored), Terms0),
+    sort(Terms0, Terms),
+    forall(member(Stored, Terms),
+           retract_stored(Model, Mask, S, P, Stored)).
+
+retract_stored(Model, Mask, S, P, O) :-
     forall(model_graph(Graph, Model, profile(_)),
            rdf_retractall(S, P, O, Graph)),
     (   ontology_graph(Onto),
@@ -498,6 +505,34 @@ retract_triple(Model, Mask, rdf(S, P, O)) :-
     ->  rdf_assert(S, P, O, Mask)
     ;   true
     ).
+
+%!  oro_stored_term(+S, +P, +O, -Stored) is nondet.
+%
+%   Stored is how the object O of `S P O` may be spelled in the store:
+%   O itself, and for a literal, the literal of the same datatype and
+%   value that some triple `S P Stored` holds.  rdf_db keeps one term
+%   for the literals of one datatype and value, spelled as the first
+%   one asserted (`cup2 hasWeight 0.50` is stored as the `0.5` of
+%   another triple), and a lookup with another spelling does not find
+%   it.
+
+oro_stored_term(_, _, O, O).
+oro_stored_term(S, P, literal(Value), literal(Stored)) :-
+    rdf(S, P, literal(eq(Value), Stored)),
+    Stored \== Value,
+    same_datatype(Value, Stored).
+
+same_datatype(type(Type, _), type(Type, _)) :-
+    !.
+same_datatype(V1, V2) :-
+    string_value(V1),
+    string_value(V2).
+
+string_value(Value) :-
+    atom(Value),
+    !.
+string_value(type(Type, _)) :-
+    rdf_equal(Type, xsd:string).
 
 %!  oro_schema_generation(-Generation) is det.
 %
