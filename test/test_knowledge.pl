@@ -684,6 +684,33 @@ test(robot_model_back, [setup(knowledge_commonsense)]) :-
     oro_reset,
     oro_check(default, ["myself rdf:type Robot"]).
 
+test(robot_model_there_during_resets, [ setup(knowledge_commonsense),
+                                        true(Missing == 0)
+                                      ]) :-
+    % While another thread resets again and again, a request naming the
+    % robot's model always finds it.
+    thread_create(forall(between(1, 20, _), oro_reset), Resetter, []),
+    kn_adds_during(Resetter, 100000, 0, Missing),
+    thread_join(Resetter, Status),
+    assertion(Status == true).
+
+%   kn_adds_during(+Thread, +Max, +Missing0, -Missing): add a fact to
+%   the robot's model while Thread runs (Max times at most); Missing
+%   counts the adds that did not find the model.
+
+kn_adds_during(Thread, Max, Missing0, Missing) :-
+    (   Max > 0,
+        thread_property(Thread, status(running))
+    ->  catch(( oro_add(myself, ["probe isOn table"]),
+                Missing1 = Missing0
+              ),
+              error(existence_error(agent, _), _),
+              Missing1 is Missing0 + 1),
+        Max1 is Max - 1,
+        kn_adds_during(Thread, Max1, Missing1, Missing)
+    ;   Missing = Missing0
+    ).
+
 :- end_tests(reset).
 
 

@@ -653,16 +653,25 @@ extension_format(nt, ntriples).
 
 %!  oro_wipe_models is det.
 %
-%   Remove every model and alias, with all their triples; the ontology
-%   layer stays.  Used by reset.
+%   Remove every model but the robot's and every alias of them, with
+%   all their triples, and empty the robot's model; the ontology layer
+%   stays.  Used by reset.  The robot's model and its aliases stay
+%   known throughout, so that a request naming it while another resets
+%   the store is not told that there is no such model.
 
 oro_wipe_models :-
     with_mutex(oro_write,
-               ( forall(retract(model_graph(Graph, _, _)),
-                        rdf_unload_graph(Graph)),
+               ( forall(model_graph(Graph, _, _), rdf_unload_graph(Graph)),
+                 forall(( model_graph(Graph, Model, Layer),
+                          Model \== myself
+                        ),
+                        retract(model_graph(Graph, Model, Layer))),
                  retractall(name_of(_, _)),
                  forall(ontology_graph(Onto), index_graph_names(Onto)),
-                 retractall(model_alias(_, _)),
+                 forall(( model_alias(Alias, Model),
+                          Model \== myself
+                        ),
+                        retract(model_alias(Alias, Model))),
                  schema_changed
                )).
 
