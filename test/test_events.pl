@@ -751,6 +751,23 @@ test(clear_event_malformed_uuid, [ setup(ev_fresh),
                                                        "Invalid UUID string: not-a-uuid"))
                                  ]) :-
     ev_connected([C], oro_call(C, clearEvent, ["not-a-uuid"], Reply)).
+test(clear_event_upper_case_uuid, [ setup(ev_fresh),
+                                    true(r(First, Again) ==
+                                         r(ok(""), "laas.openrobots.ontology.exceptions.EventNotFoundException"))
+                                  ]) :-
+    % A UUID is the same in either case (Java's UUID.fromString).
+    ev_connected([C],
+                 ( ev_register(C, ["FACT_CHECKING", "ON_TRUE", "[chicken has teeth]"], U),
+                   string_upper(U, Upper),
+                   oro_call(C, clearEvent, [Upper], First),
+                   oro_call(C, clearEvent, [U], Reply),
+                   test_error_name(Reply, Again)
+                 )).
+test(clear_event_non_hex_uuid, [ setup(ev_fresh),
+                                 true(Reply == error("java.lang.IllegalArgumentException",
+                                                     "Invalid UUID string: zzzzzzzz-0000-4000-8000-000000000000"))
+                               ]) :-
+    ev_connected([C], oro_call(C, clearEvent, ["zzzzzzzz-0000-4000-8000-000000000000"], Reply)).
 test(clear_event_from_another_connection, [ setup(ev_fresh),
                                             true(Events == [[]])
                                           ]) :-

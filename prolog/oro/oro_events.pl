@@ -813,7 +813,7 @@ oro_clear_events(Model0, Registry) :-
 %!  oro_clear_event(+Model, +Id) is det.
 %
 %   Remove the watcher Id of Model, whatever its registry: ORO's
-%   clearEvent(id).
+%   clearEvent(id).  Id is a UUID in either case.
 %   @error existence_error(event, Id) if there is none.
 %   @error domain_error(uuid, Id) if Id is not a UUID.
 
@@ -839,10 +839,23 @@ oro_clear_event(Model0, Registry, Id0) :-
     event_id(Id0, Id),
     call_watcher(clear_one(Model, Registry, Id)).
 
+%   event_id(+Text, -Id): Id is the watcher id Text names: a UUID in
+%   hexadecimal groups of 8-4-4-4-12 digits, in either case (as Java's
+%   UUID.fromString() takes it), given in lower case as registration
+%   answers it.
+
 event_id(Id0, Id) :-
     must_be(text, Id0),
-    atom_string(Id, Id0),
-    (   catch(uuid_property(Id, version(_)), _, fail)
+    atom_string(Atom, Id0),
+    downcase_atom(Atom, Id),
+    (   split_string(Id, "-", "", Groups),
+        maplist(string_length, Groups, [8, 4, 4, 4, 12]),
+        atom_codes(Id, Codes),
+        forall(member(C, Codes),
+               ( C == 0'-
+               ; between(0'0, 0'9, C)
+               ; between(0'a, 0'f, C)
+               ))
     ->  true
     ;   domain_error(uuid, Id0)
     ).
