@@ -2791,6 +2791,19 @@ test(large_change_evaluated_in_full,
                      clear(["?x isOn t9"])
                    ], Log).
 
+test(literal_replaced_by_an_equal_one_of_another_type,
+     [ true(Log == [[1-[Three]], [1-[Three], 1-[ThreeD]], [1-[ThreeD]]])
+     ]) :-
+    % 3 and 3.0 are two values of ?a, as a full evaluation finds them,
+    % though each matches the other in a pattern: 3 is lost when only
+    % 3.0 is left.
+    test_literal(xsd:int, '3', Three),
+    test_literal(xsd:double, '3.0', ThreeD),
+    ev_inc_session([ new_instance-on_toggle-a-["i1 hasAge ?a"] ],
+                   [ add(["i1 hasAge 3"]),
+                     update_and_remove(["i1 hasAge 3.0"], ["i1 hasAge 3"]),
+                     update_and_remove([], ["i1 hasAge 3.0"])
+                   ], Log).
 :- end_tests(events_incremental_cases).
 
 %   A watcher following a predicate makes the events monitor note each

@@ -1932,9 +1932,22 @@ lost_values(RemovePairs, Id, Model-Same, Query, Lost) :-
     sort(Candidates0, Candidates),
     exclude(value_holds(Model, Query), Candidates, Lost).
 
+%   value_holds(+Model, +Query, +Value): Value is still a value of the
+%   template, as a full evaluation finds them.  A literal in a pattern
+%   matches the literals of equal value (3 matches 3.0), while the
+%   values found are the literals themselves: a literal that holds so
+%   is checked again among the values the patterns give.
+
 value_holds(Model, Query, Value) :-
     copy_term(Query, query(Value, Triples)),
-    \+ \+ oro_solve(Model, Triples).
+    \+ \+ oro_solve(Model, Triples),
+    (   Value = literal(_)
+    ->  copy_term(Query, query(Template, AnyTriples)),
+        \+ \+ ( oro_solve(Model, AnyTriples),
+                Template == Value
+              )
+    ;   true
+    ).
 
 new_values([], _, _, _, []) :-
     !.
