@@ -524,3 +524,61 @@ test(term_number_pattern, [ setup(reasoning_testsuite),
     maplist(oro_term_text, Values, Xs).
 
 :- end_tests(literal_values).
+
+
+                 /*******************************
+                 *      PINNED SCHEMA TABLES    *
+                 *******************************/
+
+:- use_module(library(oro/oro_reason),
+              [ oro_with_shared_schema/3,
+                oro_shared_schema/2,
+                oro_schema_superclass/3
+              ]).
+
+:- begin_tests(shared_schema_pin).
+
+%   A thread reads model myself's shared schema tables in a pinned
+%   region while two schema changes replace them, each followed by a
+%   compilation: its tables stay (they were freed at the second
+%   compilation, whatever readers still had them) until it leaves the
+%   region, which frees them.
+
+test(tables_kept_while_pinned, [ setup(reasoning_testsuite),
+                                 true(Kept-Freed == true-true)
+                               ]) :-
+    oro_add(myself, ["Gadget rdfs:subClassOf Artifact"]),
+    rdf_global_id(oro:'Gadget', Gadget),
+    rdf_global_id(oro:'Artifact', Artifact),
+    thread_self(Me),
+    thread_create(reasoning_pinned_reader(Me), Reader, []),
+    call_cleanup(
+        (   thread_get_message(Me, pinned_key(Key), [timeout(30)]),
+            oro_add(myself, ["Widget rdfs:subClassOf Artifact"]),
+            oro_shared_schema(myself, Key1),
+            oro_add(myself, ["Gizmo rdfs:subClassOf Artifact"]),
+            oro_shared_schema(myself, Key2),
+            assertion(Key1 \== Key),
+            assertion(Key2 \== Key1),
+            test_bool(oro_schema_superclass(Key, Gadget, Artifact), Kept)
+        ),
+        (   thread_send_message(Reader, leave),
+            thread_join(Reader, Status)
+        )),
+    assertion(Status == true),
+    test_bool(test_wait_until(\+ oro_schema_superclass(Key, Gadget,
+                                                        Artifact), 10),
+              Freed).
+
+%   reasoning_pinned_reader(+Main): send Main the key of myself's shared
+%   tables from a pinned region, and leave it when told to (30 s at
+%   most).
+
+reasoning_pinned_reader(Main) :-
+    thread_self(Me),
+    oro_with_shared_schema(myself, Key,
+                           ( thread_send_message(Main, pinned_key(Key)),
+                             thread_get_message(Me, leave, [timeout(30)])
+                           )).
+
+:- end_tests(shared_schema_pin).

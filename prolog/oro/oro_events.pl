@@ -333,6 +333,7 @@ monitor(_).
 
 monitor_(transaction(begin(0), _)) :-
     !,
+    monitor_unpin,
     nb_setval(oro_events_in_commit, true).
 monitor_(transaction(end(0), _)) :-
     !,
@@ -406,6 +407,7 @@ touch(G, P, Model, Layer, Followed) :-
         Layer = Layer0,
         Followed = Followed0
     ;   graph_model(G, Model, Layer),
+        monitor_pin,
         pair_followed(Model, P, Followed),
         nb_setval(oro_events_touched,
                   [t(G, P, Model, Layer, Followed)|Touched])
@@ -444,7 +446,11 @@ pair_followed(Model, P, Followed) :-
 %   the schema: if the shared tables are stale (a schema change anywhere
 %   makes them so, as an agent's model created), the pair is followed
 %   as a whole, and the watcher thread is asked to compile them
-%   (warm(Model)) for the next writes.
+%   (warm(Model)) for the next writes.  The tables of Key are read until
+%   the commit ends, by triple_followed/5: the writing thread holds a pin
+%   on the shared tables from before it reads Key (touch/5) until then
+%   (monitor_pin/0), so that a schema change in another thread does not
+%   free them under it.
 
 type_filter(Model, P, Key) :-
     rdf_equal(P, rdf:type),
@@ -456,6 +462,29 @@ type_filter(Model, P, Key) :-
     ->  Key = Key0
     ;   thread_send_message(oro_watcher_queue, warm(Model)),
         fail
+    ).
+
+%   monitor_pin, monitor_unpin: the writing thread's pin on the shared
+%   schema tables (oro_schema_pin/0), taken before the monitor may read
+%   a key of them (a pair first noted, touch/5), at most once a commit,
+%   and left when the commit's notes are taken (take_touched/3), once
+%   no key is kept; noted in its global variable oro_events_pinned.  One
+%   left by a commit that did not end is left at the next one's start.
+
+monitor_pin :-
+    (   nb_current(oro_events_pinned, true)
+    ->  true
+    ;   sig_atomic(( oro_schema_pin,
+                     nb_setval(oro_events_pinned, true)
+                   ))
+    ).
+
+monitor_unpin :-
+    (   nb_current(oro_events_pinned, true)
+    ->  sig_atomic(( nb_setval(oro_events_pinned, false),
+                     oro_schema_unpin
+                   ))
+    ;   true
     ).
 
 %   triple_followed(+PairFollowed, +Model, +Sign, +O, -Followed): whether
@@ -478,7 +507,8 @@ triple_followed(Followed, _, _, _, Followed).
 %   take_touched(-Touched, -Followed, -Schema): the Model-P pairs noted
 %   in this transaction, each once, in the order noted; whether a
 %   watcher follows one of them (touch/5), and whether a schema triple
-%   changed.  What was noted is reset.
+%   changed.  What was noted is reset, and the pin on the shared schema
+%   tables that its keys needed is left (monitor_unpin/0).
 
 take_touched(Touched, Followed, Schema) :-
     (   nb_current(oro_events_touched, Noted)
@@ -499,7 +529,8 @@ take_touched(Touched, Followed, Schema) :-
     ),
     nb_setval(oro_events_touched, []),
     nb_setval(oro_events_followed_type, false),
-    nb_setval(oro_events_touched_schema, false).
+    nb_setval(oro_events_touched_schema, false),
+    monitor_unpin.
 
 model_pairs([], _, []).
 model_pairs([t(_, P, Model, _, _)|Noted], Seen, Pairs) :-

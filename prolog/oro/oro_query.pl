@@ -12,6 +12,7 @@
 :- use_module(library(lists)).
 :- use_module(library(error)).
 :- use_module(oro_reason).
+:- use_module(oro_store, [oro_resolve_model/2]).
 :- use_module(oro_names, [oro_resource/2, oro_object/2]).
 
 /** <module> Query: conjunctive patterns over the inference closure
@@ -85,8 +86,9 @@ prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
 oro_solve(Model0, Patterns0) :-
     must_be(list, Patterns0),
     maplist(public_pattern, Patterns0, Patterns),
-    oro_model_schema(Model0, Model, Key),
-    solve_normal(Patterns, Key, Model, none).
+    oro_resolve_model(Model0, Model),
+    oro_with_shared_schema(Model, Key,
+                           solve_normal(Patterns, Key, Model, none)).
 
 public_pattern(Pattern0, Pattern) :-
     (   nonvar(Pattern0),
@@ -98,15 +100,17 @@ public_pattern(Pattern0, Pattern) :-
 
 %   solve(+Patterns, +Model, +Deadline): oro_solve/2, stopping past
 %   Deadline (see deadline/1).  The patterns' names are normalised once
-%   and the schema tables found once; what their variables are bound
-%   to comes from the store, normal already (oro_holds_keyed/5).  The
-%   clock is read after each solution of a pattern with a variable: a
-%   ground pattern is a check, whose cost is bounded.
+%   and the schema tables found once, for the whole join, in a pinned
+%   region (oro_with_shared_schema/3) so that a schema change meanwhile
+%   does not free them; what their variables are bound to comes from
+%   the store, normal already (oro_holds_keyed/5).  The clock is read
+%   after each solution of a pattern with a variable: a ground pattern
+%   is a check, whose cost is bounded.
 
 solve(Patterns0, Model, Deadline) :-
     maplist(normal_pattern, Patterns0, Patterns),
-    oro_shared_schema(Model, Key),
-    solve_normal(Patterns, Key, Model, Deadline).
+    oro_with_shared_schema(Model, Key,
+                           solve_normal(Patterns, Key, Model, Deadline)).
 
 normal_pattern(rdf(S0, P0, O0), rdf(S, P, O)) :-
     oro_resource(S0, S),

@@ -25,7 +25,9 @@
             oro_compile_schema/2,       % +Model, -Key
             oro_compiled_schema/2,      % +Model, -Key
             oro_shared_schema/2,        % +Model, -Key
-            oro_model_schema/3,         % +Name, -Model, -Key
+            oro_with_shared_schema/3,   % +Model, -Key, :Goal
+            oro_schema_pin/0,
+            oro_schema_unpin/0,
             oro_schema_superclass/3,    % +Key, +Class, -Super
             oro_drop_schema/1,          % +Key
             oro_with_schemas/2,         % +ModelKeys, :Goal
@@ -42,7 +44,9 @@
 :- use_module(oro_store).
 
 :- meta_predicate
-    oro_with_schemas(+, 0).
+    oro_with_schemas(+, 0),
+    oro_with_shared_schema(+, -, 0),
+    pinned(0).
 :- use_module(oro_names).
 
 /** <module> Reasoning: the inference closure of a model
@@ -58,7 +62,9 @@ reasoning over small, precomputed schema closures:
     expressions and property chains) is compiled into closure tables,
     once per schema change, and cached under a key.  A schema change
     (in any model or the ontology layer) bumps oro_store's generation
-    counter; the next reader recompiles.
+    counter; the next reader recompiles.  The tables replaced are freed
+    once no thread reads shared tables (in a pinned region, see
+    oro_with_shared_schema/3).
   - Instance triples are never materialised.  oro_holds/4 derives
     them when asked: a triple `S P O` holds if an asserted triple
     `S Q O` (or `O Q S`) implies it through the precomputed *ways* of
@@ -197,21 +203,16 @@ schema(Model, Key) :-
     ;   with_mutex(oro_schema, compile_schema_once(Model, Gen, Key))
     ).
 
-%!  oro_model_schema(+Name, -Model, -Key) is det.
-%
-%   Model is the model Name designates (a model or an alias: `default`,
-%   the robot id), Key its schema tables, as oro_shared_schema/2 gives
-%   them.  The entry of the public predicates, which take a name as
-%   their caller wrote it.  A name that has tables for the current
-%   schema is a model (tables are compiled for models only, and a
-%   reset, which removes models, bumps the generation): it is not
-%   resolved again, so that the small questions (is x a C?) cost no
-%   more than with the model.
-%
-%   @error existence_error(agent, Name) if there is no such model.
-
-oro_model_schema(Name, Model, Key) :-
-    model_schema(Name, Model, Key).
+%   model_schema(+Name, -Model, -Key): Model is the model Name
+%   designates (a model or an alias: `default`, the robot id), Key its
+%   shared schema tables, as schema/2 gives them; to be called in a
+%   pinned region (pinned/1).  The entry of the public predicates,
+%   which take a name as their caller wrote it.  A name that has tables
+%   for the current schema is a model (tables are compiled for models
+%   only, and a reset, which removes models, bumps the generation): it
+%   is not resolved again, so that the small questions (is x a C?) cost
+%   no more than with the model.  Raises existence_error(agent, Name) if
+%   there is no such model.
 
 model_schema(Name, Model, Key) :-
     (   atom(Name),
@@ -305,7 +306,9 @@ oro_compile_schema(Model, Key) :-
 %   schema generation, if a thread has compiled them already; fails
 %   otherwise.  Unlike the other predicates of this module it never
 %   compiles: for the events monitor, which must stay cheap and does
-%   something safe instead.
+%   something safe instead.  A caller that reads the tables with Key
+%   must be in a pinned region, entered before this call (see
+%   oro_schema_pin/0).
 
 oro_compiled_schema(Model, Key) :-
     must_be(atom, Model),
@@ -317,11 +320,29 @@ oro_compiled_schema(Model, Key) :-
 %
 %   Key identifies the shared schema tables of Model for the current
 %   schema generation, compiled now if no thread has yet (the tables
-%   every query of Model uses).
+%   every query of Model uses).  Once a schema change has replaced
+%   them, they are freed as soon as no thread is in a pinned region
+%   (see oro_with_shared_schema/3): a caller that reads them with Key
+%   must do so in one.
 
 oro_shared_schema(Model, Key) :-
     must_be(atom, Model),
     schema(Model, Key).
+
+%!  oro_with_shared_schema(+Model, -Key, :Goal) is nondet.
+%
+%   Call Goal with Key, the schema tables of Model as
+%   oro_shared_schema/2 gives them, in a pinned region: the tables of
+%   Key are not freed while Goal runs or has choice points left, even
+%   if a schema change replaces them meanwhile.
+
+oro_with_shared_schema(Model, Key, Goal) :-
+    must_be(atom, Model),
+    pinned(with_shared_schema(Model, Key, Goal)).
+
+with_shared_schema(Model, Key, Goal) :-
+    schema(Model, Key),
+    call(Goal).
 
 %!  oro_schema_superclass(+Key, +Class, -Super) is nondet.
 %
@@ -357,14 +378,104 @@ oro_with_schemas(ModelKeys, Goal) :-
         b_setval(oro_schema_keys, Old)).
 
 
-%   Tables of an old key are dropped one compilation later, so a reader
-%   that started with it does not see them vanish.
+		 /*******************************
+		 *        PINNED READERS        *
+		 *******************************/
+
+%   The shared tables of a key replaced by a schema change (retired)
+%   must outlive every reader that was handed the key, in any thread.
+%   A reader of shared tables runs in a *pinned region* (pinned/1):
+%   the flag oro_schema_readers counts the regions entered and not yet
+%   left, in all threads, and a key retired while it is not 0 waits in
+%   retired/1 until the last reader leaves, which frees it.  The count and retired/1 are guarded by the
+%   mutex oro_schema_pin.
+%
+%   Why no reader sees its tables vanish: a key is retired
+%   (drop_schema/1) only after it has been taken out of schema_key/3
+%   (or was never put there), so no thread is handed it afterwards;
+%   and a reader counts itself in (pin/0) *before* schema/2 reads
+%   schema_key/3.  The retirement reads the count under the mutex, and
+%   so is ordered with each pin: a reader that pinned first is counted,
+%   and the key waits until it unpins; a reader that pins afterwards
+%   reads schema_key/3 after the key was taken out, and cannot get it.
+%   Keys private to a thread (private_schema/2, oro_compile_schema/2,
+%   oro_with_schemas/2) are freed by their owner and need no pin.
+%
+%   Under readers that overlap without end, retired tables wait for a
+%   moment with no reader; a reader that leaves choice points open
+%   holds its pin until they are cut.
 
 :- dynamic retired/1.
 
+%   pinned(:Goal): Goal, possibly nondeterministic, in a pinned region,
+%   held while Goal runs or has choice points.
+
+pinned(Goal) :-
+    setup_call_cleanup(pin, Goal, unpin).
+
+%!  oro_schema_pin is det.
+%!  oro_schema_unpin is det.
+%
+%   Enter and leave a pinned region (see oro_with_shared_schema/3) that
+%   is not a goal: the events monitor holds one from the moment it
+%   reads the shared tables' key until the end of the commit whose
+%   triples it classifies with it.  Each pin must be matched by one
+%   unpin, and both must run with signals blocked (sig_atomic/1), so
+%   that the mutex they take is never left locked.
+
+oro_schema_pin :-
+    pin.
+
+oro_schema_unpin :-
+    unpin.
+
+%   pin and unpin run in the setup and cleanup of setup_call_cleanup/3,
+%   where signals wait, so mutex_lock/1 and mutex_unlock/1 are paired.
+%   (Not flag/3, which meta-calls update_flag/3 under a global mutex,
+%   nor with_mutex/2 of a conjunction, which is compiled at each call:
+%   this is on the path of every query.)  The last reader takes the
+%   retired keys, and frees their tables after unlocking.
+
+pin :-
+    mutex_lock(oro_schema_pin),
+    get_flag(oro_schema_readers, N0),
+    N is N0 + 1,
+    set_flag(oro_schema_readers, N),
+    mutex_unlock(oro_schema_pin).
+
+unpin :-
+    mutex_lock(oro_schema_pin),
+    get_flag(oro_schema_readers, N0),
+    N is N0 - 1,
+    set_flag(oro_schema_readers, N),
+    (   N =:= 0,
+        retired(_)
+    ->  findall(Key, retract(retired(Key)), Keys)
+    ;   Keys = []
+    ),
+    mutex_unlock(oro_schema_pin),
+    maplist(retract_schema, Keys).
+
+%   drop_schema(+Key): retire the shared tables Key, out of
+%   schema_key/3: freed now if no thread is in a pinned region, else
+%   when the last one leaves.  Under with_mutex/2: it is called while a
+%   query compiles the tables, where a signal (the query's time limit)
+%   may come.
+
 drop_schema(Key) :-
-    forall(retract(retired(Old)), retract_schema(Old)),
-    assertz(retired(Key)).
+    with_mutex(oro_schema_pin, retire(Key, Free)),
+    (   Free == true
+    ->  retract_schema(Key)
+    ;   true
+    ).
+
+retire(Key, Free) :-
+    get_flag(oro_schema_readers, N),
+    (   N =:= 0
+    ->  Free = true
+    ;   assertz(retired(Key)),
+        Free = false
+    ).
 
 retract_schema(Key) :-
     retractall(s_class(Key, _)),
@@ -1164,8 +1275,25 @@ oro_holds(Model0, S0, P0, O0) :-
     oro_resource(S0, S),
     oro_resource(P0, P),
     oro_object(O0, O),
-    model_schema(Model0, Model, Key),
-    oro_holds_keyed(Key, Model, S, P, O).
+    (   ground(S-P-O)
+    ->  pinned(model_holds_ground(Model0, S, P, O))
+    ;   pinned(model_derivations(Model0, S-P-O, S, P, O, Triples0)),
+        sort(Triples0, Triples),
+        member(S-P-O, Triples)
+    ).
+
+%   model_holds_ground(+Name, +S, +P, +O) and model_derivations(+Name,
+%   ?Template, ?S, ?P, ?O, -Bag): holds_ground/5 and derivations/7 with
+%   the shared schema tables of the model Name names (model_schema/3),
+%   as one goal for pinned/1.
+
+model_holds_ground(Name, S, P, O) :-
+    model_schema(Name, Model, Key),
+    holds_ground(Key, Model, S, P, O).
+
+model_derivations(Name, Template, S, P, O, Bag) :-
+    model_schema(Name, Model, Key),
+    derivations(Key, Model, Template, S, P, O, Bag).
 
 %!  oro_holds_normal(+Model, ?S, ?P, ?O) is nondet.
 %
@@ -1177,13 +1305,31 @@ oro_holds(Model0, S0, P0, O0) :-
 %   names are not normalised again at each step.
 
 oro_holds_normal(Model, S, P, O) :-
+    (   ground(S-P-O)
+    ->  pinned(shared_holds_ground(Model, S, P, O))
+    ;   pinned(shared_derivations(Model, S-P-O, S, P, O, Triples0)),
+        sort(Triples0, Triples),
+        member(S-P-O, Triples)
+    ).
+
+%   shared_holds_ground(+Model, +S, +P, +O) and shared_derivations(+Model,
+%   ?Template, ?S, ?P, ?O, -Bag): holds_ground/5 and derivations/7 with
+%   the shared tables, for pinned/1 (one goal: a conjunction would be
+%   compiled at each call).
+
+shared_holds_ground(Model, S, P, O) :-
     schema(Model, Key),
-    oro_holds_keyed(Key, Model, S, P, O).
+    holds_ground(Key, Model, S, P, O).
+
+shared_derivations(Model, Template, S, P, O, Bag) :-
+    schema(Model, Key),
+    derivations(Key, Model, Template, S, P, O, Bag).
 
 %!  oro_holds_keyed(+Key, +Model, ?S, ?P, ?O) is nondet.
 %
 %   As oro_holds_normal/4, with the schema tables Key of Model, as
-%   oro_shared_schema/2 gives them.  For a caller that evaluates many
+%   oro_with_shared_schema/3 gives them (and in its Goal, so that they
+%   are not freed meanwhile).  For a caller that evaluates many
 %   patterns in one go (a join), which finds the tables once.
 
 oro_holds_keyed(Key, Model, S, P, O) :-
@@ -1204,10 +1350,9 @@ oro_holds_keyed(Key, Model, S, P, O) :-
 %   that sorts what it keeps of them anyway (a find of one pattern).
 
 oro_holds_bag(Model, Template, S, P, O, Bag) :-
-    schema(Model, Key),
     (   ground(S-P-O)
-    ->  findall(Template, holds_ground(Key, Model, S, P, O), Bag)
-    ;   derivations(Key, Model, Template, S, P, O, Bag)
+    ->  findall(Template, pinned(shared_holds_ground(Model, S, P, O)), Bag)
+    ;   pinned(shared_derivations(Model, Template, S, P, O, Bag))
     ).
 
 %   holds_ground(+Key, +Model, +S, +P, +O): a check.  A type check, the
@@ -1854,11 +1999,12 @@ oro_type(Model, X, Class) :-
 oro_subclass(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    model_schema(Model0, Model, Key),
-    (   nonvar(Sub), nonvar(Super)
-    ->  once(sub_class_of(Key, Sub, Super))
-    ;   sub_class_of(Key, Model, Sub, Super)
-    ).
+    pinned(( model_schema(Model0, Model, Key),
+             (   nonvar(Sub), nonvar(Super)
+             ->  once(sub_class_of(Key, Sub, Super))
+             ;   sub_class_of(Key, Model, Sub, Super)
+             )
+           )).
 
 %!  oro_subproperty(+Model, ?Sub, ?Super) is nondet.
 %
@@ -1867,14 +2013,15 @@ oro_subclass(Model0, Sub0, Super0) :-
 oro_subproperty(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    model_schema(Model0, _, Key),
-    (   nonvar(Sub),
-        \+ s_prop(Key, Sub, _)
-    ->  Super = Sub
-    ;   nonvar(Sub), nonvar(Super)
-    ->  once(s_subprop(Key, Sub, Super))
-    ;   s_subprop(Key, Sub, Super)
-    ).
+    pinned(( model_schema(Model0, _, Key),
+             (   nonvar(Sub),
+                 \+ s_prop(Key, Sub, _)
+             ->  Super = Sub
+             ;   nonvar(Sub), nonvar(Super)
+             ->  once(s_subprop(Key, Sub, Super))
+             ;   s_subprop(Key, Sub, Super)
+             )
+           )).
 
 %!  oro_class(+Model, ?Class) is nondet.
 %
@@ -1884,17 +2031,18 @@ oro_subproperty(Model0, Sub0, Super0) :-
 
 oro_class(Model0, Class0) :-
     oro_resource(Class0, Class),
-    model_schema(Model0, Model, Key),
-    (   nonvar(Class)
-    ->  class_key(Key, Model, Class)
-    ;   findall(C, ( s_class(Key, C)
-                   ; rdf_equal(rdf:type, Type),
-                     oro_asserted(Model, _, Type, C),
-                     \+ meta_class(C)
-                   ), Classes0),
-        sort(Classes0, Classes),
-        member(Class, Classes)
-    ).
+    pinned(( model_schema(Model0, Model, Key),
+             (   nonvar(Class)
+             ->  class_key(Key, Model, Class)
+             ;   findall(C, ( s_class(Key, C)
+                            ; rdf_equal(rdf:type, Type),
+                              oro_asserted(Model, _, Type, C),
+                              \+ meta_class(C)
+                            ), Classes0),
+                 sort(Classes0, Classes),
+                 member(Class, Classes)
+             )
+           )).
 
 class_key(Key, Model, Class) :-
     (   s_class(Key, Class)
@@ -1915,25 +2063,26 @@ class_key(Key, Model, Class) :-
 
 oro_property(Model, Property0, Kind) :-
     oro_resource(Property0, Property),
-    schema(Model, Key),
-    (   nonvar(Property)
-    ->  (   s_prop(Key, Property, Kind0)
-        ->  true
-        ;   once(oro_asserted(Model, _, Property, _))
-        ->  Kind0 = other
-        ),
-        used_kind(Model, Property, Kind0, Kind)
-    ;   findall(P-K, s_prop(Key, P, K), Declared),
-        findall(P-other, ( rdf_current_predicate(P),
-                           \+ s_prop(Key, P, _),
-                           \+ oro_meta_namespace(P),
-                           once(oro_asserted(Model, _, P, _))
-                         ), Used),
-        append(Declared, Used, All0),
-        sort(All0, All),
-        member(Property-Kind0, All),
-        used_kind(Model, Property, Kind0, Kind)
-    ).
+    pinned(( schema(Model, Key),
+             (   nonvar(Property)
+             ->  (   s_prop(Key, Property, Kind0)
+                 ->  true
+                 ;   once(oro_asserted(Model, _, Property, _))
+                 ->  Kind0 = other
+                 ),
+                 used_kind(Model, Property, Kind0, Kind)
+             ;   findall(P-K, s_prop(Key, P, K), Declared),
+                 findall(P-other, ( rdf_current_predicate(P),
+                                    \+ s_prop(Key, P, _),
+                                    \+ oro_meta_namespace(P),
+                                    once(oro_asserted(Model, _, P, _))
+                                  ), Used),
+                 append(Declared, Used, All0),
+                 sort(All0, All),
+                 member(Property-Kind0, All),
+                 used_kind(Model, Property, Kind0, Kind)
+             )
+           )).
 
 used_kind(Model, Property, other, Kind) :-
     !,
@@ -1952,8 +2101,9 @@ used_kind(_, _, Kind, Kind).
 
 oro_individual(Model0, X0) :-
     oro_resource(X0, X),
-    model_schema(Model0, Model, Key),
-    individual_key(Key, Model, X).
+    pinned(( model_schema(Model0, Model, Key),
+             individual_key(Key, Model, X)
+           )).
 
 %!  oro_same_individual(+Model, +X, -Y) is multi.
 %
@@ -1961,8 +2111,9 @@ oro_individual(Model0, X0) :-
 
 oro_same_individual(Model, X0, Y) :-
     oro_resource(X0, X),
-    schema(Model, Key),
-    same(Key, X, Y).
+    pinned(( schema(Model, Key),
+             same(Key, X, Y)
+           )).
 
 %!  oro_has_same_individuals(+Model) is semidet.
 %
@@ -1970,25 +2121,27 @@ oro_same_individual(Model, X0, Y) :-
 %   oro_same_individual/3 gives every individual itself only.
 
 oro_has_same_individuals(Model) :-
-    schema(Model, Key),
-    s_same(Key, _, _),
-    !.
+    pinned(( schema(Model, Key),
+             once(s_same(Key, _, _))
+           )).
 
 %!  oro_functional_property(+Model, ?Property) is nondet.
 %
 %   Property is declared owl:FunctionalProperty in Model.
 
 oro_functional_property(Model, Property) :-
-    schema(Model, Key),
-    s_functional(Key, Property).
+    pinned(( schema(Model, Key),
+             s_functional(Key, Property)
+           )).
 
 %!  oro_transitive_property(+Model, ?Property) is nondet.
 %
 %   Property is declared owl:TransitiveProperty in Model.
 
 oro_transitive_property(Model, Property) :-
-    schema(Model, Key),
-    s_transitive(Key, Property).
+    pinned(( schema(Model, Key),
+             s_transitive(Key, Property)
+           )).
 
 %!  oro_property_characteristic(+Model, ?Property, ?Characteristic) is nondet.
 %
@@ -1997,8 +2150,9 @@ oro_transitive_property(Model, Property) :-
 %   (transitive and symmetric properties have their own predicates).
 
 oro_property_characteristic(Model, Property, Characteristic) :-
-    schema(Model, Key),
-    s_char(Key, Property, Characteristic).
+    pinned(( schema(Model, Key),
+             s_char(Key, Property, Characteristic)
+           )).
 
 %!  oro_disjoint_classes(+Model, ?Class1, ?Class2) is nondet.
 %
@@ -2006,8 +2160,9 @@ oro_property_characteristic(Model, Property, Characteristic) :-
 %   owl:complementOf or owl:AllDisjointClasses), either way.
 
 oro_disjoint_classes(Model, Class1, Class2) :-
-    schema(Model, Key),
-    s_disjoint(Key, Class1, Class2).
+    pinned(( schema(Model, Key),
+             s_disjoint(Key, Class1, Class2)
+           )).
 
 %!  oro_disjoint_properties(+Model, ?Property1, ?Property2) is nondet.
 %
@@ -2015,8 +2170,9 @@ oro_disjoint_classes(Model, Class1, Class2) :-
 %   or owl:AllDisjointProperties), either way.
 
 oro_disjoint_properties(Model, Property1, Property2) :-
-    schema(Model, Key),
-    s_prop_disjoint(Key, Property1, Property2).
+    pinned(( schema(Model, Key),
+             s_prop_disjoint(Key, Property1, Property2)
+           )).
 
 %!  oro_class_definition(+Model, ?Class, ?Definition) is nondet.
 %
@@ -2031,8 +2187,9 @@ oro_disjoint_properties(Model, Property1, Property2) :-
 %     - intersection(Classes), union(Classes), one_of(Individuals).
 
 oro_class_definition(Model, Class, Definition) :-
-    schema(Model, Key),
-    s_def(Key, Class, Definition).
+    pinned(( schema(Model, Key),
+             s_def(Key, Class, Definition)
+           )).
 
 %!  oro_property_chain(+Model, ?Property, ?Links) is nondet.
 %
@@ -2040,8 +2197,9 @@ oro_class_definition(Model, Class, Definition) :-
 %   Property (owl:propertyChainAxiom).
 
 oro_property_chain(Model, Property, Links) :-
-    schema(Model, Key),
-    s_chain(Key, Property, Links).
+    pinned(( schema(Model, Key),
+             s_chain(Key, Property, Links)
+           )).
 
 %!  oro_property_way(+Model, +Property, ?Implying, ?Dir) is nondet.
 %
@@ -2051,8 +2209,9 @@ oro_property_chain(Model, Property, Links) :-
 
 oro_property_way(Model, Property, Implying, Dir) :-
     must_be(atom, Property),
-    schema(Model, Key),
-    way(Key, Property, Implying, Dir).
+    pinned(( schema(Model, Key),
+             way(Key, Property, Implying, Dir)
+           )).
 
 %!  oro_pattern_dependencies(+Model, +Triples, -Predicates) is det.
 %
@@ -2068,16 +2227,17 @@ oro_property_way(Model, Property, Implying, Dir) :-
 
 oro_pattern_dependencies(Model, Triples, Predicates) :-
     must_be(list, Triples),
-    schema(Model, Key),
-    (   member(rdf(_, P, O), Triples),
-        depends_on_any(Key, P, O)
-    ->  Predicates = [any]
-    ;   findall(Q, ( member(rdf(_, P, O), Triples),
-                     pattern_dependency(Key, P, O, Q)
-                   ), Qs),
-        rdf_equal(owl:sameAs, SameAs),
-        sort([SameAs|Qs], Predicates)
-    ).
+    pinned(( schema(Model, Key),
+             (   member(rdf(_, P, O), Triples),
+                 depends_on_any(Key, P, O)
+             ->  Predicates = [any]
+             ;   findall(Q, ( member(rdf(_, P, O), Triples),
+                              pattern_dependency(Key, P, O, Q)
+                            ), Qs),
+                 rdf_equal(owl:sameAs, SameAs),
+                 sort([SameAs|Qs], Predicates)
+             )
+           )).
 
 depends_on_any(_, P, _) :-
     var(P),
