@@ -1999,12 +1999,19 @@ oro_type(Model, X, Class) :-
 oro_subclass(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    pinned(( model_schema(Model0, Model, Key),
-             (   nonvar(Sub), nonvar(Super)
-             ->  once(sub_class_of(Key, Sub, Super))
-             ;   sub_class_of(Key, Model, Sub, Super)
-             )
-           )).
+    pinned(subclass(Model0, Sub, Super)).
+
+%   subclass/3, subproperty/3, class/2, property/3, individual/2,
+%   same_individual/3: the bodies of the public predicates, as goals of
+%   their own for pinned/1 (a conjunction given to it would be compiled
+%   again on every call).
+
+subclass(Model0, Sub, Super) :-
+    model_schema(Model0, Model, Key),
+    (   nonvar(Sub), nonvar(Super)
+    ->  once(sub_class_of(Key, Sub, Super))
+    ;   sub_class_of(Key, Model, Sub, Super)
+    ).
 
 %!  oro_subproperty(+Model, ?Sub, ?Super) is nondet.
 %
@@ -2013,15 +2020,17 @@ oro_subclass(Model0, Sub0, Super0) :-
 oro_subproperty(Model0, Sub0, Super0) :-
     oro_resource(Sub0, Sub),
     oro_resource(Super0, Super),
-    pinned(( model_schema(Model0, _, Key),
-             (   nonvar(Sub),
-                 \+ s_prop(Key, Sub, _)
-             ->  Super = Sub
-             ;   nonvar(Sub), nonvar(Super)
-             ->  once(s_subprop(Key, Sub, Super))
-             ;   s_subprop(Key, Sub, Super)
-             )
-           )).
+    pinned(subproperty(Model0, Sub, Super)).
+
+subproperty(Model0, Sub, Super) :-
+    model_schema(Model0, _, Key),
+    (   nonvar(Sub),
+        \+ s_prop(Key, Sub, _)
+    ->  Super = Sub
+    ;   nonvar(Sub), nonvar(Super)
+    ->  once(s_subprop(Key, Sub, Super))
+    ;   s_subprop(Key, Sub, Super)
+    ).
 
 %!  oro_class(+Model, ?Class) is nondet.
 %
@@ -2031,18 +2040,20 @@ oro_subproperty(Model0, Sub0, Super0) :-
 
 oro_class(Model0, Class0) :-
     oro_resource(Class0, Class),
-    pinned(( model_schema(Model0, Model, Key),
-             (   nonvar(Class)
-             ->  class_key(Key, Model, Class)
-             ;   findall(C, ( s_class(Key, C)
-                            ; rdf_equal(rdf:type, Type),
-                              oro_asserted(Model, _, Type, C),
-                              \+ meta_class(C)
-                            ), Classes0),
-                 sort(Classes0, Classes),
-                 member(Class, Classes)
-             )
-           )).
+    pinned(class(Model0, Class)).
+
+class(Model0, Class) :-
+    model_schema(Model0, Model, Key),
+    (   nonvar(Class)
+    ->  class_key(Key, Model, Class)
+    ;   findall(C, ( s_class(Key, C)
+                   ; rdf_equal(rdf:type, Type),
+                     oro_asserted(Model, _, Type, C),
+                     \+ meta_class(C)
+                   ), Classes0),
+        sort(Classes0, Classes),
+        member(Class, Classes)
+    ).
 
 class_key(Key, Model, Class) :-
     (   s_class(Key, Class)
@@ -2063,26 +2074,28 @@ class_key(Key, Model, Class) :-
 
 oro_property(Model, Property0, Kind) :-
     oro_resource(Property0, Property),
-    pinned(( schema(Model, Key),
-             (   nonvar(Property)
-             ->  (   s_prop(Key, Property, Kind0)
-                 ->  true
-                 ;   once(oro_asserted(Model, _, Property, _))
-                 ->  Kind0 = other
-                 ),
-                 used_kind(Model, Property, Kind0, Kind)
-             ;   findall(P-K, s_prop(Key, P, K), Declared),
-                 findall(P-other, ( rdf_current_predicate(P),
-                                    \+ s_prop(Key, P, _),
-                                    \+ oro_meta_namespace(P),
-                                    once(oro_asserted(Model, _, P, _))
-                                  ), Used),
-                 append(Declared, Used, All0),
-                 sort(All0, All),
-                 member(Property-Kind0, All),
-                 used_kind(Model, Property, Kind0, Kind)
-             )
-           )).
+    pinned(property(Model, Property, Kind)).
+
+property(Model, Property, Kind) :-
+    schema(Model, Key),
+    (   nonvar(Property)
+    ->  (   s_prop(Key, Property, Kind0)
+        ->  true
+        ;   once(oro_asserted(Model, _, Property, _))
+        ->  Kind0 = other
+        ),
+        used_kind(Model, Property, Kind0, Kind)
+    ;   findall(P-K, s_prop(Key, P, K), Declared),
+        findall(P-other, ( rdf_current_predicate(P),
+                           \+ s_prop(Key, P, _),
+                           \+ oro_meta_namespace(P),
+                           once(oro_asserted(Model, _, P, _))
+                         ), Used),
+        append(Declared, Used, All0),
+        sort(All0, All),
+        member(Property-Kind0, All),
+        used_kind(Model, Property, Kind0, Kind)
+    ).
 
 used_kind(Model, Property, other, Kind) :-
     !,
@@ -2101,9 +2114,11 @@ used_kind(_, _, Kind, Kind).
 
 oro_individual(Model0, X0) :-
     oro_resource(X0, X),
-    pinned(( model_schema(Model0, Model, Key),
-             individual_key(Key, Model, X)
-           )).
+    pinned(individual(Model0, X)).
+
+individual(Model0, X) :-
+    model_schema(Model0, Model, Key),
+    individual_key(Key, Model, X).
 
 %!  oro_same_individual(+Model, +X, -Y) is multi.
 %
@@ -2111,9 +2126,11 @@ oro_individual(Model0, X0) :-
 
 oro_same_individual(Model, X0, Y) :-
     oro_resource(X0, X),
-    pinned(( schema(Model, Key),
-             same(Key, X, Y)
-           )).
+    pinned(same_individual(Model, X, Y)).
+
+same_individual(Model, X, Y) :-
+    schema(Model, Key),
+    same(Key, X, Y).
 
 %!  oro_has_same_individuals(+Model) is semidet.
 %
@@ -2121,27 +2138,33 @@ oro_same_individual(Model, X0, Y) :-
 %   oro_same_individual/3 gives every individual itself only.
 
 oro_has_same_individuals(Model) :-
-    pinned(( schema(Model, Key),
-             once(s_same(Key, _, _))
-           )).
+    pinned(has_same_individuals(Model)).
+
+has_same_individuals(Model) :-
+    schema(Model, Key),
+    once(s_same(Key, _, _)).
 
 %!  oro_functional_property(+Model, ?Property) is nondet.
 %
 %   Property is declared owl:FunctionalProperty in Model.
 
 oro_functional_property(Model, Property) :-
-    pinned(( schema(Model, Key),
-             s_functional(Key, Property)
-           )).
+    pinned(functional_property(Model, Property)).
+
+functional_property(Model, Property) :-
+    schema(Model, Key),
+    s_functional(Key, Property).
 
 %!  oro_transitive_property(+Model, ?Property) is nondet.
 %
 %   Property is declared owl:TransitiveProperty in Model.
 
 oro_transitive_property(Model, Property) :-
-    pinned(( schema(Model, Key),
-             s_transitive(Key, Property)
-           )).
+    pinned(transitive_property(Model, Property)).
+
+transitive_property(Model, Property) :-
+    schema(Model, Key),
+    s_transitive(Key, Property).
 
 %!  oro_property_characteristic(+Model, ?Property, ?Characteristic) is nondet.
 %
@@ -2150,9 +2173,11 @@ oro_transitive_property(Model, Property) :-
 %   (transitive and symmetric properties have their own predicates).
 
 oro_property_characteristic(Model, Property, Characteristic) :-
-    pinned(( schema(Model, Key),
-             s_char(Key, Property, Characteristic)
-           )).
+    pinned(property_characteristic(Model, Property, Characteristic)).
+
+property_characteristic(Model, Property, Characteristic) :-
+    schema(Model, Key),
+    s_char(Key, Property, Characteristic).
 
 %!  oro_disjoint_classes(+Model, ?Class1, ?Class2) is nondet.
 %
@@ -2209,9 +2234,11 @@ oro_property_chain(Model, Property, Links) :-
 
 oro_property_way(Model, Property, Implying, Dir) :-
     must_be(atom, Property),
-    pinned(( schema(Model, Key),
-             way(Key, Property, Implying, Dir)
-           )).
+    pinned(property_way(Model, Property, Implying, Dir)).
+
+property_way(Model, Property, Implying, Dir) :-
+    schema(Model, Key),
+    way(Key, Property, Implying, Dir).
 
 %!  oro_pattern_dependencies(+Model, +Triples, -Predicates) is det.
 %
