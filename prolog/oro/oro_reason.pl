@@ -1275,25 +1275,7 @@ oro_holds(Model0, S0, P0, O0) :-
     oro_resource(S0, S),
     oro_resource(P0, P),
     oro_object(O0, O),
-    (   ground(S-P-O)
-    ->  pinned(model_holds_ground(Model0, S, P, O))
-    ;   pinned(model_derivations(Model0, S-P-O, S, P, O, Triples0)),
-        sort(Triples0, Triples),
-        member(S-P-O, Triples)
-    ).
-
-%   model_holds_ground(+Name, +S, +P, +O) and model_derivations(+Name,
-%   ?Template, ?S, ?P, ?O, -Bag): holds_ground/5 and derivations/7 with
-%   the shared schema tables of the model Name names (model_schema/3),
-%   as one goal for pinned/1.
-
-model_holds_ground(Name, S, P, O) :-
-    model_schema(Name, Model, Key),
-    holds_ground(Key, Model, S, P, O).
-
-model_derivations(Name, Template, S, P, O, Bag) :-
-    model_schema(Name, Model, Key),
-    derivations(Key, Model, Template, S, P, O, Bag).
+    holds_pinned(Model0, S, P, O).
 
 %!  oro_holds_normal(+Model, ?S, ?P, ?O) is nondet.
 %
@@ -1305,24 +1287,33 @@ model_derivations(Name, Template, S, P, O, Bag) :-
 %   names are not normalised again at each step.
 
 oro_holds_normal(Model, S, P, O) :-
+    holds_pinned(Model, S, P, O).
+
+%   holds_pinned(+Name, ?S, ?P, ?O): oro_holds_normal/4 for the model
+%   Name names (a model or an alias), the answers found in a pinned
+%   region of the shared tables, then given one by one out of it, so
+%   that a caller that keeps choice points does not hold the pin.
+
+holds_pinned(Name, S, P, O) :-
     (   ground(S-P-O)
-    ->  pinned(shared_holds_ground(Model, S, P, O))
-    ;   pinned(shared_derivations(Model, S-P-O, S, P, O, Triples0)),
+    ->  pinned(model_holds_ground(Name, S, P, O))
+    ;   pinned(model_derivations(Name, S-P-O, S, P, O, Triples0)),
         sort(Triples0, Triples),
         member(S-P-O, Triples)
     ).
 
-%   shared_holds_ground(+Model, +S, +P, +O) and shared_derivations(+Model,
+%   model_holds_ground(+Name, +S, +P, +O) and model_derivations(+Name,
 %   ?Template, ?S, ?P, ?O, -Bag): holds_ground/5 and derivations/7 with
-%   the shared tables, for pinned/1 (one goal: a conjunction would be
-%   compiled at each call).
+%   the shared schema tables of the model Name names (model_schema/3),
+%   as one goal for pinned/1 (a conjunction would be compiled at each
+%   call).
 
-shared_holds_ground(Model, S, P, O) :-
-    schema(Model, Key),
+model_holds_ground(Name, S, P, O) :-
+    model_schema(Name, Model, Key),
     holds_ground(Key, Model, S, P, O).
 
-shared_derivations(Model, Template, S, P, O, Bag) :-
-    schema(Model, Key),
+model_derivations(Name, Template, S, P, O, Bag) :-
+    model_schema(Name, Model, Key),
     derivations(Key, Model, Template, S, P, O, Bag).
 
 %!  oro_holds_keyed(+Key, +Model, ?S, ?P, ?O) is nondet.
@@ -1351,8 +1342,8 @@ oro_holds_keyed(Key, Model, S, P, O) :-
 
 oro_holds_bag(Model, Template, S, P, O, Bag) :-
     (   ground(S-P-O)
-    ->  findall(Template, pinned(shared_holds_ground(Model, S, P, O)), Bag)
-    ;   pinned(shared_derivations(Model, Template, S, P, O, Bag))
+    ->  findall(Template, pinned(model_holds_ground(Model, S, P, O)), Bag)
+    ;   pinned(model_derivations(Model, Template, S, P, O, Bag))
     ).
 
 %   holds_ground(+Key, +Model, +S, +P, +O): a check.  A type check, the
