@@ -1111,18 +1111,35 @@ typed_literal(LexCodes0, TypeCodes0, literal(type(Type, Lex))) :-
     atom_string(Lex, LexString).
 
 check_datatype(Type, LexString, TypeText) :-
+    lexical_verdict(Type, LexString, Verdict),
+    datatype_verdict(Verdict, LexString, TypeText).
+
+%   lexical_verdict(+Type, +LexText, -Verdict): whether LexText is a
+%   lexical form of the datatype Type: `ok` (or a datatype out of the
+%   XSD namespace, not checked), `bad_form`, or `bad_datatype` (an XSD
+%   name that is no datatype).  datatype_verdict(+Verdict, +LexText,
+%   +TypeText) raises the syntax error of a bad one, naming the type as
+%   the statement did.
+
+lexical_verdict(Type, LexText, Verdict) :-
     oro_prefix(xsd, NS),
     (   atom_concat(NS, Local, Type)
     ->  (   xsd_lexical(Local, Check)
-        ->  string_codes(LexString, Codes),
+        ->  string_codes(LexText, Codes),
             (   lexical_ok(Check, Codes)
-            ->  true
-            ;   throw(error(syntax_error(oro_lexical_form(LexString, TypeText)), _))
+            ->  Verdict = ok
+            ;   Verdict = bad_form
             )
-        ;   throw(error(syntax_error(oro_invalid_datatype(TypeText)), _))
+        ;   Verdict = bad_datatype
         )
-    ;   true
+    ;   Verdict = ok
     ).
+
+datatype_verdict(ok, _, _).
+datatype_verdict(bad_form, LexText, TypeText) :-
+    throw(error(syntax_error(oro_lexical_form(LexText, TypeText)), _)).
+datatype_verdict(bad_datatype, _, TypeText) :-
+    throw(error(syntax_error(oro_invalid_datatype(TypeText)), _)).
 
 %   lang_split(+Codes, -LexCodes, -Lang): Codes is `"lex"@lang` or
 %   `'lex'@lang`.  LexCodes is the text between the quotes.
@@ -1627,9 +1644,13 @@ term_literal_check(Term, Object) :-
     (   nonvar(Term),
         Term = literal(_),
         Object = literal(type(Type, Lex))
-    ->  oro_iri_name(Type, TypeText),
-        atom_string(Lex, LexString),
-        check_datatype(Type, LexString, TypeText)
+    ->  lexical_verdict(Type, Lex, Verdict),
+        (   Verdict == ok
+        ->  true
+        ;   oro_iri_name(Type, TypeText),       % named for the error only
+            atom_string(Lex, LexString),
+            datatype_verdict(Verdict, LexString, TypeText)
+        )
     ;   true
     ).
 
