@@ -17,7 +17,6 @@
 :- use_module(library(debug)).
 :- use_module(oro_store).
 :- use_module(oro_persist).
-:- use_module(oro_reason, [oro_literal_match/2]).
 :- use_module(library(rbtrees)).
 
 /** <module> Memory profiles: facts that fade
@@ -113,20 +112,13 @@ oro_memory_remember(Model, Profile, Triples) :-
     ).
 
 %   stored_triple(+Graph, +S, +P, +O, -Stored): the triple S P O is in
-%   Graph as S P Stored.  rdf_db stores literals of the same value as
-%   one term, spelled as the first one asserted (`0.50` is kept as the
-%   `0.5` the store holds already), which a lookup with another
-%   spelling does not find: such a literal is looked up by value among
-%   the values of S P in Graph.
+%   Graph as S P Stored: a literal may be stored spelled as another
+%   one of the same value (oro_stored_term/4).
 
 stored_triple(Graph, S, P, O, Stored) :-
-    (   rdf(S, P, O, Graph)
-    ->  Stored = O
-    ;   O = literal(_)
-    ->  rdf(S, P, Stored, Graph),
-        Stored = literal(_),
-        oro_literal_match(O, Stored)
-    ).
+    oro_stored_term(S, P, O, Stored),
+    rdf(S, P, Stored, Graph),
+    !.
 
 %   set_deadline(+Record): Record is deadline(Model, Profile, S, P, O,
 %   Deadline), the form journaled by oro_persist.  The lookup by fact
