@@ -101,16 +101,19 @@ language(Text, Lang) :-
     atom_string(Atom, Text),
     downcase_atom(Atom, Lang).
 
+%   label(+Model, +Resource, +Lang, -Label): as oro_label/4, Lang a
+%   language tag in lower case (language/2).
+
 label(Model, Resource, Lang, Label) :-
     rdf_equal(rdfs:label, LabelP),
     findall(L, oro_asserted(Model, Resource, LabelP, L), Labels0),
     sort(Labels0, Labels),
     (   member(literal(lang(Tag, Text)), Labels),
-        same_language(Tag, Lang)
+        downcase_atom(Tag, Lang)
     ->  true
-    ;   member(literal(lang(Tag, Text)), Labels),
-        primary_language(Tag, Primary),
-        primary_language(Lang, Primary)
+    ;   primary_language(Lang, Primary),
+        member(literal(lang(Tag, Text)), Labels),
+        primary_language(Tag, Primary)
     ->  true
     ;   member(literal(L), Labels),
         L \= lang(_, _)
@@ -123,10 +126,6 @@ label(Model, Resource, Lang, Label) :-
     ),
     !,
     atomic_to_atom(Text, Label).
-
-same_language(Tag, Lang) :-
-    downcase_atom(Tag, Lower),
-    downcase_atom(Lang, Lower).
 
 %   primary_language(+Tag, -Primary): Primary is the language subtag of
 %   Tag (`en` for `en-GB`), in lower case.
