@@ -188,19 +188,12 @@ unions) with 10k bottles: an inferred type 3.1 us, a hasValue edge
 %   compiling them if the schema changed since they were made.
 
 schema(Model, Key) :-
-    nb_current(oro_schema_keys, Keys),
-    memberchk(Model-Key0, Keys),
-    !,
-    Key = Key0.
-schema(Model, Key) :-
-    oro_store_schema_pending,
-    !,
-    private_schema(Model, Key).
-schema(Model, Key) :-
-    oro_schema_generation(Gen),
-    (   schema_key(Model, Gen, Key0)
+    (   cached_schema(Model, Key0)
     ->  Key = Key0
-    ;   with_mutex(oro_schema, compile_schema_once(Model, Gen, Key))
+    ;   oro_store_schema_pending
+    ->  private_schema(Model, Key)
+    ;   oro_schema_generation(Gen),
+        with_mutex(oro_schema, compile_schema_once(Model, Gen, Key))
     ).
 
 %   model_schema(+Name, -Model, -Key): Model is the model Name
@@ -222,6 +215,11 @@ model_schema(Name, Model, Key) :-
     ;   oro_resolve_model(Name, Model),
         schema(Model, Key)
     ).
+
+%   cached_schema(+Model, -Key): the tables schema/2 would give without
+%   compiling: those given for this thread (oro_with_schemas/2), else
+%   the shared ones of the current generation, unless this thread's
+%   write changed the schema (its tables are its own).
 
 cached_schema(Model, Key) :-
     (   nb_current(oro_schema_keys, Keys),
@@ -1202,15 +1200,21 @@ type_only_sub(Key, Model, Sub, Super) :-
     ->  \+ s_class(Key, Super),           % only itself is below it
         class_key(Key, Model, Super),
         Sub = Super
-    ;   rdf_equal(rdf:type, Type),
-        findall(C, ( oro_asserted(Model, _, Type, C),
-                     \+ s_class(Key, C),
-                     \+ meta_class(C)
-                   ), Classes0),
+    ;   findall(C, type_only_class(Key, Model, C), Classes0),
         sort(Classes0, Classes),
         member(Sub, Classes),
         sub_class_of(Key, Sub, Super)
     ).
+
+%   type_only_class(+Key, +Model, -Class) is nondet: Class is the type
+%   of something in Model and unknown to the schema tables Key (once
+%   for each thing it types).
+
+type_only_class(Key, Model, Class) :-
+    rdf_equal(rdf:type, Type),
+    oro_asserted(Model, _, Type, Class),
+    \+ s_class(Key, Class),
+    \+ meta_class(Class).
 
 way(Key, P, Q, Dir) :-
     (   s_has_ways(Key, P)
@@ -2038,9 +2042,7 @@ class(Model0, Class) :-
     (   nonvar(Class)
     ->  class_key(Key, Model, Class)
     ;   findall(C, ( s_class(Key, C)
-                   ; rdf_equal(rdf:type, Type),
-                     oro_asserted(Model, _, Type, C),
-                     \+ meta_class(C)
+                   ; type_only_class(Key, Model, C)
                    ), Classes0),
         sort(Classes0, Classes),
         member(Class, Classes)
