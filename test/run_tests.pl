@@ -3,7 +3,10 @@
         swipl test/run_tests.pl
 
     Loads every test/test_*.pl, runs all units, prints a closing line
-    `N passed, N failed` and exits 0 only if nothing failed.
+    `N passed, N failed` and exits 0 only if nothing failed.  Naming
+    test files runs only those (while working on one area):
+
+        swipl test/run_tests.pl test_protocol test_events.pl
 */
 
 :- prolog_load_context(directory, Dir),
@@ -80,7 +83,9 @@ main :-
     start_watchdog,
     absolute_file_name(oro_test('.'), Dir, [file_type(directory)]),
     directory_files(Dir, Entries),
-    include(test_file, Entries, Files0),
+    include(test_file, Entries, Files1),
+    current_prolog_flag(argv, Argv),
+    selected_files(Argv, Files1, Files0),
     msort(Files0, Files),
     forall(member(F, Files),
            ( directory_file_path(Dir, F, Path),
@@ -107,6 +112,24 @@ main :-
     ->  halt(0)
     ;   halt(1)
     ).
+
+%   selected_files(+Names, +Files, -Selected): the test files named on
+%   the command line (with or without .pl), or all of them.
+
+selected_files([], Files, Files) :-
+    !.
+selected_files(Names, Files, Selected) :-
+    findall(F,
+            ( member(Name, Names),
+              file_name_extension(Base, _, Name),
+              file_name_extension(Base, pl, F),
+              (   memberchk(F, Files)
+              ->  true
+              ;   format(user_error, "No test file ~w~n", [F]),
+                  halt(2)
+              )
+            ),
+            Selected).
 
 test_file(F) :-
     sub_atom(F, 0, _, _, test_),
