@@ -49,7 +49,8 @@ class Server:
                 self.port = int(match.group(2))
                 break
         # keep draining, so that the server never blocks on its output
-        threading.Thread(target=self.process.stdout.read, daemon=True).start()
+        self.drain = threading.Thread(target=self.process.stdout.read, daemon=True)
+        self.drain.start()
 
     def stop(self):
         if self.process.poll() is None:
@@ -59,6 +60,11 @@ class Server:
             except subprocess.TimeoutExpired:
                 self.process.kill()
                 self.process.wait(WAIT)
+        drain = getattr(self, "drain", None)
+        if drain is not None:
+            drain.join(WAIT)
+        if drain is None or not drain.is_alive():
+            self.process.stdout.close()
 
 
 class FakeServer:
@@ -86,6 +92,10 @@ class FakeServer:
             if line != "#end#":
                 request.append(line)
                 continue
+            if request == ["close"]:
+                self.send("Closing now!\n")
+                self.conn.shutdown(socket.SHUT_RDWR)
+                break
             if request == ["listSimpleMethods"]:
                 body = ",".join('"%s"' % m for m in self.methods)
                 self.send("ok\n[%s]\n#end#\n" % body)
