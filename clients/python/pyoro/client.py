@@ -1,5 +1,6 @@
 """The connection to an ORO server: requests, replies and events."""
 
+import atexit
 import collections
 import inspect
 import logging
@@ -54,32 +55,21 @@ class OroTimeout(OroServerError, TimeoutError):
         super().__init__(message)
 
 
-# Clients still open when the main thread ends are closed then, after
-# the events already caused are delivered (see Oro.close).  One
-# non-daemon thread waits for the main thread on behalf of all of them.
+# Clients still open when the interpreter exits (after its last
+# non-daemon thread) are closed then, after the events already caused
+# are delivered (see Oro.close): the reader and dispatcher threads are
+# daemons, which still run while atexit handlers do.
 
 _open_clients = weakref.WeakSet()
-_lifeguard_lock = threading.Lock()
-_lifeguard = None
 
 
+@atexit.register
 def _close_at_exit():
-    threading.main_thread().join()
     for client in list(_open_clients):
         try:
             client.close()
         except Exception:                       # exiting: report, go on
             logger.exception("closing %r at exit", client)
-
-
-def _watch(client):
-    global _lifeguard
-    with _lifeguard_lock:
-        _open_clients.add(client)
-        if _lifeguard is None:
-            _lifeguard = threading.Thread(target=_close_at_exit,
-                                          name="pyoro-exit", daemon=False)
-            _lifeguard.start()
 
 
 def _settle(future, value=None, error=None):
@@ -145,8 +135,8 @@ class Oro:
 
     ``close()`` (or leaving a ``with Oro() as oro:`` block) delivers
     the events the client's own changes caused, then closes the
-    connection.  A client still open when the main thread ends is
-    closed then in the same way.
+    connection.  A client still open when the program exits is closed
+    then in the same way.
     """
 
     def __init__(self, host=None, port=None, timeout=None,
@@ -193,7 +183,7 @@ class Oro:
         for name in self.rpc_methods:
             if name and not hasattr(type(self), name):
                 setattr(self, name, self._server_method(name))
-        _watch(self)
+        _open_clients.add(self)
 
     def __repr__(self):
         state = "closed" if self._closed.is_set() else "open"

@@ -63,26 +63,12 @@ def quote(text):
     tracks single and double quotes separately, so a bare ``'`` inside a
     double-quoted element would hide the commas that follow it.
     """
-    out = ['"']
-    for char in text:
-        if char == "\\":
-            out.append("\\\\")
-        elif char == '"':
-            out.append('\\"')
-        elif char == "'":
-            out.append("\\'")
-        elif char == "\n":
-            out.append("\\n")
-        elif char == "\r":
-            out.append("\\r")
-        elif char == "\t":
-            out.append("\\t")
-        elif ord(char) < 32 or ord(char) == 127:
-            out.append("\\u%04x" % ord(char))
-        else:
-            out.append(char)
-    out.append('"')
-    return "".join(out)
+    return '"' + text.translate(_ELEMENT_ESCAPES) + '"'
+
+
+_ELEMENT_ESCAPES = {code: "\\u%04x" % code for code in list(range(32)) + [127]}
+_ELEMENT_ESCAPES.update({ord("\\"): "\\\\", ord('"'): '\\"', ord("'"): "\\'",
+                         ord("\n"): "\\n", ord("\r"): "\\r", ord("\t"): "\\t"})
 
 
 def _element(value):

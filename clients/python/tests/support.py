@@ -68,14 +68,17 @@ class Server:
 
 
 class FakeServer:
-    """A loopback server that answers ``listSimpleMethods`` and then
-    lets the test script the rest: ``requests`` collects the requests
-    (lists of lines), ``send(text)`` writes to the client."""
+    """A loopback server that answers ``listSimpleMethods`` and ``close``
+    and lets the test script the rest: ``respond(request)`` gives the
+    reply to each other request (lists of lines), ``requests`` collects
+    them all, ``send(text)`` writes to the client."""
 
-    def __init__(self, methods=("add(Set)", "hello()", "find(String, Set)")):
+    def __init__(self, methods=("add(Set)", "hello()", "find(String, Set)"),
+                 respond=None):
         self.listener = socket.create_server(("127.0.0.1", 0))
         self.port = self.listener.getsockname()[1]
         self.methods = methods
+        self.respond = respond              # request lines -> reply text, or None
         self.requests = []
         self.cond = threading.Condition()
         self.conn = None
@@ -93,12 +96,19 @@ class FakeServer:
                 request.append(line)
                 continue
             if request == ["close"]:
+                with self.cond:
+                    self.requests.append(request)
+                    self.cond.notify_all()
                 self.send("Closing now!\n")
                 self.conn.shutdown(socket.SHUT_RDWR)
                 break
             if request == ["listSimpleMethods"]:
                 body = ",".join('"%s"' % m for m in self.methods)
                 self.send("ok\n[%s]\n#end#\n" % body)
+            elif self.respond is not None:
+                reply = self.respond(request)
+                if reply is not None:
+                    self.send(reply)
             with self.cond:
                 self.requests.append(request)
                 self.cond.notify_all()
@@ -133,3 +143,61 @@ def fresh(prefix="x"):
     with _counter_lock:
         _counter[0] += 1
         return "%s%d_%d" % (prefix, os.getpid(), _counter[0])
+
+
+class RecordingProxy:
+    """A loopback TCP proxy to ``port`` that keeps every byte the server
+    sends (``from_server``, one bytes object per connection), so that a
+    test can tell what the server wrote from what the client made of it."""
+
+    def __init__(self, port):
+        self.target = port
+        self.listener = socket.create_server(("127.0.0.1", 0))
+        self.port = self.listener.getsockname()[1]
+        self.records = []
+        self.pumps = []
+        self.thread = threading.Thread(target=self._accept, daemon=True)
+        self.thread.start()
+
+    def _accept(self):
+        while True:
+            try:
+                client, _ = self.listener.accept()
+            except OSError:
+                return
+            server = socket.create_connection(("127.0.0.1", self.target), WAIT)
+            record = bytearray()
+            self.records.append(record)
+            for source, sink, keep in ((client, server, None), (server, client, record)):
+                pump = threading.Thread(target=self._pump, args=(source, sink, keep),
+                                        daemon=True)
+                pump.start()
+                self.pumps.append(pump)
+
+    @staticmethod
+    def _pump(source, sink, keep):
+        try:
+            while True:
+                data = source.recv(65536)
+                if not data:
+                    break
+                if keep is not None:
+                    keep.extend(data)
+                sink.sendall(data)
+        except OSError:
+            pass
+        finally:
+            for s in (sink, source):
+                try:
+                    s.shutdown(socket.SHUT_RDWR)
+                except OSError:
+                    pass
+
+    def from_server(self):
+        """What the server sent on each connection, once every one ended."""
+        for pump in list(self.pumps):
+            pump.join(WAIT)
+        return [bytes(r) for r in self.records]
+
+    def close(self):
+        self.listener.close()
