@@ -11,12 +11,14 @@ import threading
 import weakref
 from concurrent.futures import Future, InvalidStateError, TimeoutError as _FutureTimeout
 
-from .wire import IdList, decode_lines, decode_value, encode_request
+from .wire import IdList, decode_lines, encode_request
 
 __all__ = ["Oro", "OroServerError", "OroConnectionError", "OroTimeout"]
 
+# No handler of its own: until the program configures logging, warnings
+# and errors (an exception in a callback) reach stderr through Python's
+# last-resort handler rather than vanishing.
 logger = logging.getLogger("pyoro")
-logger.addHandler(logging.NullHandler())
 
 _FOREVER = object()          # "no timeout given": use the client's default
 
@@ -410,9 +412,11 @@ class Oro:
                     break
                 else:
                     self._on_reply(status, lines)
-        except (OSError, ValueError) as e:
+        except OSError as e:
             if not self._closing:
                 logger.error("reading from the server: %s", e)
+        except Exception:                       # a bug: report it, fail the calls
+            logger.exception("reading from the server")
         finally:
             try:
                 self._socket.shutdown(socket.SHUT_RDWR)

@@ -150,6 +150,17 @@ class ClientTest(unittest.TestCase):
         self.oro += "mug isOn %s" % target
         self.assertEqual(answers.wait(1), [[target]])
 
+    def test_a_failing_callback_is_logged_and_the_next_runs(self):
+        got = Collector()
+        target = fresh("vase")
+        self.oro.subscribe(["?a breaks %s" % target], lambda content: 1 / 0)
+        self.oro.subscribe(["?a drops %s" % target], got)
+        with self.assertLogs("pyoro", "ERROR") as logs:
+            self.oro += "cat breaks %s" % target
+            self.oro += "cat drops %s" % target
+            self.assertEqual(got.wait(1), [["cat"]])
+        self.assertIn("ZeroDivisionError", "\n".join(logs.output))
+
     def test_events_of_another_client(self):
         got = Collector()
         target = fresh("room")
