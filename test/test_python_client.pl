@@ -7,7 +7,7 @@
 :- use_module(oro_test_support).
 :- use_module(library(process)).
 :- use_module(library(readutil)).
-:- use_module(library(pcre), []).
+:- use_module(library(pcre), [re_matchsub/4]).
 
 %   python3_available: python3 is on the PATH; if not, say so.
 
