@@ -58,24 +58,20 @@ whatever happens.
 %   port, as tests must), host(Host) (default '127.0.0.1').  Listener
 %   is an opaque handle for oro_kbapi_port/2 and oro_kbapi_stop/1.
 %
-%   @error domain_error(port, Port) if Port is over 65535.
+%   @error type_error(between(0, 65535), Port) for a bad port.
 
 oro_kbapi_start(Options, Listener) :-
     must_be(list, Options),
     option(port(Port0), Options, 6970),
-    must_be(nonneg, Port0),
-    (   Port0 =< 65535
-    ->  true
-    ;   domain_error(port, Port0)
-    ),
+    must_be(between(0, 65535), Port0),
     option(host(Host), Options, '127.0.0.1'),
+    (   Port0 =:= 0
+    ->  true                                % tcp_bind/2 picks it
+    ;   Port = Port0
+    ),
     tcp_socket(Socket),
     tcp_setopt(Socket, reuseaddr),
-    (   Port0 =:= 0
-    ->  tcp_bind(Socket, Host:Port)
-    ;   Port = Port0,
-        tcp_bind(Socket, Host:Port)
-    ),
+    tcp_bind(Socket, Host:Port),
     tcp_listen(Socket, 64),
     with_mutex(oro_kbapi,
                ( assertz(listening(Socket)),

@@ -147,28 +147,25 @@ binding(Bindings, Name, Var) :-
 %   a number, a boolean or a string literal by its value; another
 %   literal by its lexical form.
 
-kb_json_term(literal(Value), JSON) :-
+kb_json_term(Literal, JSON) :-
+    Literal = literal(Value),
     !,
-    literal_json(Value, JSON).
+    oro_literal_lexical(Literal, Lex),
+    (   Value = type(Type, _),
+        oro_numeric_datatype(Type, _),
+        atom_number(Lex, Number)
+    ->  JSON = Number
+    ;   Value = type(Type, _),
+        rdf_equal(Type, xsd:boolean)
+    ->  (   memberchk(Lex, [true, '1'])
+        ->  JSON = true
+        ;   JSON = false
+        )
+    ;   atom_string(Lex, JSON)
+    ).
 kb_json_term(IRI, JSON) :-
     oro_iri_name(IRI, Name),
     atom_string(Name, JSON).
-
-literal_json(type(Type, Lex), JSON) :-
-    !,
-    (   oro_numeric_datatype(Type, _),
-        atom_number(Lex, Number)
-    ->  JSON = Number
-    ;   rdf_equal(Type, xsd:boolean),
-        memberchk(Lex-JSON0, [true-true, false-false, '1'-true, '0'-false])
-    ->  JSON = JSON0
-    ;   atom_string(Lex, JSON)
-    ).
-literal_json(lang(_, Text), JSON) :-
-    !,
-    atom_string(Text, JSON).
-literal_json(Text, JSON) :-
-    atom_string(Text, JSON).
 
 		 /*******************************
 		 *         SUBSCRIPTIONS        *

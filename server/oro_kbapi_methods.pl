@@ -105,7 +105,10 @@ kb_connection_closed(Context) :-
     Context.events = slot(Events),
     (   Events = events(Queue, Thread)
     ->  kb_client_gone(Queue),
-        catch(thread_send_message(Queue, stop), _, true),
+        (   catch(thread_send_message(Queue, stop, [timeout(0)]), _, fail)
+        ->  true
+        ;   catch(thread_signal(Thread, throw(kb_events_stop)), _, true)
+        ),
         (   thread_self(Thread)
         ->  true
         ;   catch(thread_join(Thread, _), _, true)
@@ -120,7 +123,8 @@ client_queue(Context, Queue) :-
     ->  Queue = Queue0
     ;   setting(event_queue, Max),
         message_queue_create(Queue, [max_size(Max)]),
-        thread_create(deliver_events(Queue, Context.out, Context.mutex),
+        thread_create(catch(deliver_events(Queue, Context.out, Context.mutex),
+                            kb_events_stop, true),
                       Thread, []),
         nb_setarg(1, Slot, events(Queue, Thread))
     ).

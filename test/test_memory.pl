@@ -666,6 +666,20 @@ test(lifespan_of_long_term_fact_stays,
     agm_mem_clock(T1),
     oro_memory_sync,
     test_bool(agm_mem_holds(myself, "f p o"), Holds).
+test(update_with_lifespan,
+     [ setup(agm_mem_clocked),
+       true(r(Old, New, Gone) == r(false, true, true))
+     ]) :-
+    oro_add(myself, ["hasMood rdf:type owl:FunctionalProperty",
+                     "bob hasMood calm"]),
+    oro_update(myself, ["bob hasMood angry"], lifespan(1)),
+    test_bool(agm_mem_holds(myself, "bob hasMood calm"), Old),
+    test_bool(agm_mem_holds(myself, "bob hasMood angry"), New),
+    agm_mem_t0(T0),
+    D is T0 + 50,
+    agm_mem_clock(D),
+    oro_memory_sync,
+    test_bool(agm_mem_gone(myself, "bob hasMood angry"), Gone).
 test(lifespan_not_positive, [ setup(agm_mem_fresh),
                               error(domain_error(oro_lifespan, 0))
                             ]) :-
