@@ -56,8 +56,7 @@ and goes again in between is not reported.
 :- dynamic
     subscription/5,                 % Id, Models, Patterns, Shape, OneShot
     subscribed/2,                   % Id, Client
-    previous/2,                     % Id, Rows
-    change_waiting/0.
+    previous/2.                     % Id, Rows
 
 		 /*******************************
 		 *            QUERIES           *
@@ -262,17 +261,20 @@ call_thread(Request) :-
     ).
 
 %   monitor(+Event): a committed change, other than oro_events' own
-%   snapshots, asks for one evaluation.  Tiny and total: it never
-%   blocks (the queue is unbounded) and sends nothing while a
-%   `changed` is waiting.
+%   snapshots, asks for one evaluation if there are subscriptions.
+%   Tiny and total: it never blocks (the queue is unbounded), sends
+%   nothing while a `changed` is waiting, and changes no clause (a
+%   flag says a `changed` waits), so that writes leave no work to the
+%   clause garbage collector (see oro_store).
 
 monitor(transaction(end(0), Id)) :-
     Id \== oro(events),
+    subscription(_, _, _, _, _),
     !,
-    (   change_waiting
+    flag(oro_kbapi_change_waiting, Waiting, 1),
+    (   Waiting == 1
     ->  true
-    ;   assertz(change_waiting),
-        catch(thread_send_message(oro_kbapi_events_queue, changed), _, true)
+    ;   catch(thread_send_message(oro_kbapi_events_queue, changed), _, true)
     ).
 monitor(_).
 
@@ -282,7 +284,7 @@ events_loop :-
     events_loop.
 
 handle(changed) :-
-    retractall(change_waiting),
+    flag(oro_kbapi_change_waiting, _, 0),
     forall(subscription(Id, _, _, _, _),
            catch(evaluate(Id), E, print_message(error, E))).
 handle(call(Request, Thread, Tag)) :-

@@ -257,9 +257,8 @@ method(version, _, [], Version) :-
     kb_version(Version).
 method(methods, _, [], Names) :-
     findall(Text,
-            ( kb_method(Name, Params),
-              Name \== close,
-              maplist(param_text, Params, Texts),
+            ( kb_method(Name, Params),              % close too: pykb's
+              maplist(param_text, Params, Texts),   % close() calls it
               atomic_list_concat(Texts, ', ', Inner),
               format(string(Text), "~w(~w)", [Name, Inner])
             ),

@@ -114,8 +114,9 @@ test(methods_listed, true(Missing =@= [])) :-
     findall(M, ( member(M, [hello, methods, about, lookup, label, details,
                             classesof, exist, find, revise, add, update,
                             retract, remove, subscribe, sparql, load, save,
-                            clear, check_consistency, safe_add, explain,
-                            similarities, differences, discriminate]),
+                            clear, close, check_consistency, safe_add,
+                            explain, similarities, differences,
+                            discriminate]),
                  \+ ( member(T, Methods),
                       atom_concat(M, '(', Prefix),
                       sub_atom(T, 0, _, _, Prefix)
@@ -610,6 +611,7 @@ test(forgetting_fires_event, true(E =@= [_{o:"alfred"}])) :-
             T2 is T1 + 1000,
             kb_clock(T2),
             oro_memory_sync,
+            kb_events_sync,                 % forgetting evaluated
             ok(C, add, [["alfred isIn room"]]),
             event(C, Id, E) )).
 test(bad_lifespan, true(r(A, B) =@= r(true, true))) :-
@@ -617,3 +619,44 @@ test(bad_lifespan, true(r(A, B) =@= r(true, true))) :-
             test_bool(is_error(C, add, [["a b c"], null, "soon"]), B) )).
 
 :- end_tests(kbapi_lifespan).
+
+                 /*******************************
+                 *          LOAD, SAVE          *
+                 *******************************/
+
+kb_files_start(Dir) :-
+    tmp_file(kbapi, Dir),
+    make_directory(Dir),
+    test_server_start([commonsense(false), kb_port(0), save_dir(Dir)]).
+
+kb_files_stop(Dir) :-
+    kb_stop,
+    delete_directory_and_contents(Dir).
+
+:- begin_tests(kbapi_files).
+
+test(save_and_load, [ setup(kb_files_start(Dir)),
+                      cleanup(kb_files_stop(Dir)),
+                      true(r(Saved, Here, There) =@= r(true, true, false))
+                    ]) :-
+    directory_file_path(Dir, 'world.ttl', World),
+    setup_call_cleanup(open(World, write, Out),
+                       format(Out, "@prefix : <http://kb.openrobots.org#> .~n\c
+                                    :cup1 :isOn :table1 .~n", []),
+                       close(Out)),
+    kb(C, ( ok(C, add, [["fork1 isOn table1"]]),
+            kb_call(C, save, [], _{basename:"snap"}, ok),
+            directory_file_path(Dir, 'snap-myself.rdf', Snap),
+            test_bool(exists_file(Snap), Saved),
+            ok(C, load, [World, ["loaded"]]),
+            ok(C, exist, [["cup1 isOn table1"], ["loaded"]], Here),
+            ok(C, exist, [["cup1 isOn table1"]], There)
+          )).
+test(load_missing_file, [ setup(kb_files_start(Dir)),
+                          cleanup(kb_files_stop(Dir)),
+                          true(E == true)
+                        ]) :-
+    directory_file_path(Dir, 'none.ttl', None),
+    kb(C, test_bool(is_error(C, load, [None]), E)).
+
+:- end_tests(kbapi_files).
