@@ -10,6 +10,7 @@
             oro_remove/2,               % +Model, +Statements
             oro_clear/2,                % +Model, +Patterns
             oro_update/2,               % +Model, +Statements
+            oro_update/3,               % +Model, +Statements, +Profile
             oro_save/2,                 % +Model, +File
             % questions
             oro_check/2,                % +Model, +Patterns

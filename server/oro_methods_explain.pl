@@ -1,4 +1,6 @@
-:- module(oro_methods_explain, []).
+:- module(oro_methods_explain,
+          [ oro_explain_values/3        % +Model, +Triples, -Values
+          ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).
@@ -70,11 +72,21 @@ oro_methods:method(explain(set), querying,
 
 m_explain(Statements, list(Values)) :-
     oro_complete_statements(Statements, Triples),
-    maplist(statement_value(myself), Triples, Values0),
-    (   oro_consistent(myself)
+    oro_explain_values(myself, Triples, Values).
+
+%!  oro_explain_values(+Model, +Triples, -Values) is det.
+%
+%   Values are the maps (oro_protocol value terms) `explain` answers
+%   for the rdf(S,P,O) Triples in Model: one a statement, then, if
+%   Model is inconsistent, one a conflict.  The KB-API's `explain`
+%   gives them for any model.
+
+oro_explain_values(Model, Triples, Values) :-
+    maplist(statement_value(Model), Triples, Values0),
+    (   oro_consistent(Model)
     ->  Values = Values0
-    ;   oro_explain_conflict(myself, Conflicts),
-        maplist(conflict_value(myself), Conflicts, ConflictValues),
+    ;   oro_explain_conflict(Model, Conflicts),
+        maplist(conflict_value(Model), Conflicts, ConflictValues),
         append(Values0, ConflictValues, Values)
     ).
 

@@ -3,7 +3,8 @@
             oro_server_stop/1,          % +Server
             oro_server_shutdown/1,      % +Server
             oro_server_port/2,          % +Server, -Port
-            oro_server_connections/2    % +Server, -Count
+            oro_server_connections/2,   % +Server, -Count
+            oro_server_kb_port/2        % +Server, -Port
           ]).
 :- use_module(library(socket)).
 :- use_module(library(main), [argv_options/3]).
@@ -20,13 +21,14 @@
 :- use_module(oro_methods_categorization).
 :- use_module(oro_methods_explain).
 :- use_module(oro_plugins).
+:- use_module(oro_kbapi).
 
 /** <module> The ORO socket server
 
     swipl server/oro_server.pl [--port=N] [--host=ADDR] [--ontology=FILE]...
                                [--no-commonsense] [--robot-id=ID]
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
-                               [--db=DIR]
+                               [--db=DIR] [--kb-port=N|--no-kb]
 
 An accept thread hands each connection to a worker thread, at most
 `max_connections` at once; each worker reads requests with
@@ -85,6 +87,8 @@ opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
+opt_type(kb_port, kb_port, between(0, 65535)).
+opt_type(kb, kb, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -108,6 +112,10 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
+  --kb-port=N        Also serve the KB-API dialect (knowledge_core, pykb)
+                     on port N (default 6970, or a free one with --port=0;
+                     0 picks a free one)
+  --no-kb            Serve the ORO protocol only
   -h, --help         Show this help
 ").
 
@@ -130,7 +138,8 @@ main :-
                [Positional]),
         halt(1)
     ),
-    catch(oro_server_start(Options, Server), E,
+    kb_port_option(Options, Options1),
+    catch(oro_server_start(Options1, Server), E,
           ( print_message(error, E),
             halt(1)
           )),
@@ -146,6 +155,10 @@ main :-
     on_signal(int, _, shutdown_signal),
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
+    (   oro_server_kb_port(Server, KbPort)
+    ->  format("oro serving the KB-API on ~w:~w~n", [Host, KbPort])
+    ;   true
+    ),
     flush_output,
     load_sparql_engine,
     thread_get_message(oro_server_stop),
@@ -238,6 +251,28 @@ answered(Queue, Deadline, Threads, Left) :-
 loopback(Host) :-
     memberchk(Host, ['127.0.0.1', localhost, '::1']).
 
+%   kb_port_option(+Options0, -Options): on the command line the KB-API
+%   is served on port 6970 (on a free port with --port=0) unless
+%   --kb-port says otherwise or --no-kb turns it off.
+
+kb_port_option(Options0, Options) :-
+    (   option(kb(false), Options0)
+    ->  Options = [kb_port(false)|Options0]
+    ;   option(kb_port(_), Options0)
+    ->  Options = Options0
+    ;   option(port(0), Options0)
+    ->  Options = [kb_port(0)|Options0]
+    ;   Options = [kb_port(6970)|Options0]
+    ).
+
+%!  oro_server_kb_port(+Server, -Port) is semidet.
+%
+%   The port Server serves the KB-API dialect on; fails if it does not.
+
+oro_server_kb_port(Server, Port) :-
+    Server.kbapi \== none,
+    oro_kbapi_port(Server.kbapi, Port).
+
 %!  oro_server_start(+Options, -Server) is det.
 %
 %   Initialise the knowledge base and start listening.  Options are
@@ -247,8 +282,10 @@ loopback(Host) :-
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
-%   oro_store_rebuild/0; every request runs in oro_store_read/1).
-%   Server is an opaque handle.
+%   oro_store_rebuild/0; every request runs in oro_store_read/1),
+%   kb_port(Port) (serve the KB-API dialect too, see oro_kbapi: off
+%   unless given, so that servers started here never clash; 0 picks a
+%   free port).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -290,8 +327,14 @@ oro_server_start(Options, Server) :-
     get_time(Started),
     message_queue_create(Control),
     message_queue_create(Jobs),
+    option(kb_port(KbPort), Options, false),
+    (   KbPort == false
+    ->  KbApi = none
+    ;   oro_kbapi_start([port(KbPort), host(Host)], KbApi)
+    ),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
-                        started:Started, accept:Accept, control:Control},
+                        started:Started, accept:Accept, control:Control,
+                        kbapi:KbApi},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
@@ -325,6 +368,10 @@ oro_server_connections(Server, Count) :-
 %   could land inside a handler and be taken for an error.
 
 oro_server_stop(Server) :-
+    (   Server.kbapi == none
+    ->  true
+    ;   oro_kbapi_stop(Server.kbapi)
+    ),
     thread_send_message(Server.control, stop),
     wake_acceptor(Server),
     thread_join(Server.accept, _),

@@ -21,6 +21,7 @@
             test_server_stop_synced/0,
             test_server_wait_idle/0,
             test_server_port/1,         % -Port
+            test_server_kb_port/1,      % -Port
             test_server_connections/1,  % -Count
             test_connected/2,           % -Conn, :Goal
             test_call/3,                % +Method, +Params, ?Reply
@@ -54,6 +55,7 @@
 :- use_module(library(settings)).
 :- use_module('../prolog/oro').
 :- use_module('../server/oro_server').
+:- use_module('../server/oro_kbapi', [oro_kbapi_connections/2]).
 
 /** <module> Helpers shared by the test files
 
@@ -363,14 +365,19 @@ test_server_stop_synced :-
 %!  test_server_wait_idle is det.
 %
 %   Wait (10 s at most) until the workers of the unit's server, if
-%   any, have seen their clients leave.
+%   any, have seen their clients leave (its KB-API clients too).
 
 test_server_wait_idle :-
     forall(test_server(Server), wait_idle(Server)).
 
 wait_idle(Server) :-
     (   is_dict(Server)
-    ->  ignore(test_wait_until(oro_server_connections(Server, 0), 10))
+    ->  ignore(test_wait_until(oro_server_connections(Server, 0), 10)),
+        (   get_dict(kbapi, Server, KbApi),
+            KbApi \== none
+        ->  ignore(test_wait_until(oro_kbapi_connections(KbApi, 0), 10))
+        ;   true
+        )
     ;   true
     ).
 
@@ -382,6 +389,16 @@ test_server_port(Port) :-
     test_server(Server),
     !,
     oro_server_port(Server, Port).
+
+%!  test_server_kb_port(-Port) is semidet.
+%
+%   Port is the KB-API port of the unit's server (started with
+%   kb_port(0)); fails if none runs or it serves no KB-API.
+
+test_server_kb_port(Port) :-
+    test_server(Server),
+    !,
+    oro_server_kb_port(Server, Port).
 
 %!  test_server_connections(-Count) is semidet.
 %

@@ -610,6 +610,81 @@ test(refresh_while_forgetting_waits,
     test_bool(agm_mem_holds(myself, "f p o"), Holds),
     agm_mem_deadline_list(myself, Ds).
 
+%   A lifespan of its own (lifespan(Units), the KB-API's `lifespan`):
+%   any number of units, fractions too; the fact lives in the `timed`
+%   graph and goes at its deadline; re-adding it with another lifespan
+%   moves the deadline; a long-term fact given a lifespan stays.
+
+test(lifespan_forgotten_at_deadline,
+     [ setup(agm_mem_clocked),
+       true(r(Ds, Before, After, Left) == r([D-"f p o"-timed], true, false, []))
+     ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["f p o"], lifespan(2.5)),
+    D is T0 + 125,
+    agm_mem_deadlines(myself, Ds),
+    Early is D - 1,
+    agm_mem_clock(Early),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Before),
+    agm_mem_clock(D),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), After),
+    oro_memory_deadlines(myself, Left).
+test(lifespan_any_length,
+     [ setup(agm_mem_clocked),
+       true(Ds == [D1-"a p o", D2-"b p o"])
+     ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["a p o"], lifespan(1)),
+    oro_add(myself, ["b p o"], lifespan(1000)),
+    D1 is T0 + 50,
+    D2 is T0 + 50000,
+    agm_mem_deadline_list(myself, Ds).
+test(lifespan_readded_moves_deadline,
+     [ setup(agm_mem_clocked),
+       true(r(Ds, Holds) == r([D2-"f p o"], true))
+     ]) :-
+    agm_mem_t0(T0),
+    oro_add(myself, ["f p o"], lifespan(2)),
+    oro_add(myself, ["f p o"], lifespan(10)),
+    D2 is T0 + 500,
+    agm_mem_deadline_list(myself, Ds),
+    D1 is T0 + 100,
+    agm_mem_clock(D1),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
+test(lifespan_of_long_term_fact_stays,
+     [ setup(agm_mem_clocked),
+       true(r(Ds, Holds) == r([], true))
+     ]) :-
+    oro_add(myself, ["f p o"]),
+    oro_add(myself, ["f p o"], lifespan(1)),
+    oro_memory_deadlines(myself, Ds),
+    agm_mem_t0(T0),
+    T1 is T0 + 100,
+    agm_mem_clock(T1),
+    oro_memory_sync,
+    test_bool(agm_mem_holds(myself, "f p o"), Holds).
+test(update_with_lifespan,
+     [ setup(agm_mem_clocked),
+       true(r(Old, New, Gone) == r(false, true, true))
+     ]) :-
+    oro_add(myself, ["hasMood rdf:type owl:FunctionalProperty",
+                     "bob hasMood calm"]),
+    oro_update(myself, ["bob hasMood angry"], lifespan(1)),
+    test_bool(agm_mem_holds(myself, "bob hasMood calm"), Old),
+    test_bool(agm_mem_holds(myself, "bob hasMood angry"), New),
+    agm_mem_t0(T0),
+    D is T0 + 50,
+    agm_mem_clock(D),
+    oro_memory_sync,
+    test_bool(agm_mem_gone(myself, "bob hasMood angry"), Gone).
+test(lifespan_not_positive, [ setup(agm_mem_fresh),
+                              error(domain_error(oro_lifespan, 0))
+                            ]) :-
+    oro_add(myself, ["f p o"], lifespan(0)).
+
 :- end_tests(agm_mem_clock).
 
 

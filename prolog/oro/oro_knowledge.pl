@@ -7,6 +7,7 @@
             oro_remove/2,               % +Model, +Statements
             oro_clear/2,                % +Model, +Patterns
             oro_update/2,               % +Model, +Statements
+            oro_update/3,               % +Model, +Statements, +Profile
             oro_check/2,                % +Model, +Patterns
             oro_find/4,                 % +Model, ?Var, +Patterns, -Values
             oro_save/2,                 % +Model, +File
@@ -250,12 +251,21 @@ asserted_match(Model, rdf(S, P, O), rdf(S, P, Stored)) :-
 %   functional property of Model (declared in the ontology or at run
 %   time), first retract the asserted values it had for that subject.
 
-oro_update(Model0, Statements) :-
-    oro_resolve_model(Model0, Model),
-    oro_complete_statements(Statements, Triples),
-    oro_store_write(update(Model), update_triples(Model, Triples)).
+oro_update(Model, Statements) :-
+    oro_update(Model, Statements, longterm).
 
-update_triples(Model, Triples) :-
+%!  oro_update(+Model, +Statements, +Profile) is det.
+%
+%   As oro_update/2, the statements being asserted with the memory
+%   Profile as oro_add/3 takes it (lifespan(Units) too).
+
+oro_update(Model0, Statements, Profile0) :-
+    oro_resolve_model(Model0, Model),
+    oro_memory_profile(Profile0, Profile),
+    oro_complete_statements(Statements, Triples),
+    oro_store_write(update(Model), update_triples(Model, Triples, Profile)).
+
+update_triples(Model, Triples, Profile) :-
     findall(rdf(S, P, Old),
             ( member(rdf(S, P, _), Triples),
               oro_functional_property(Model, P),
@@ -264,7 +274,7 @@ update_triples(Model, Triples) :-
             Stale0),
     sort(Stale0, Stale),
     oro_store_retract(Model, Stale),
-    oro_store_assert(Model, Triples, longterm).
+    add_triples(Model, Triples, Profile).
 
 		 /*******************************
 		 *          QUESTIONS           *

@@ -23,7 +23,11 @@
 
 A fact added with the `shortterm` profile lives 10 time units, with
 `episodic` 300; `longterm` (also `default`) facts are never forgotten.
-One unit is the `time_base` setting (1000 ms; `--time-base`).
+A fact may also be given a lifespan of its own, lifespan(Units) (any
+positive number of units: seconds at the default time base), as the
+KB-API's `lifespan` asks; such facts live in the graph of a fourth
+profile, `timed`.  One unit is the `time_base` setting (1000 ms;
+`--time-base`).
 
 Each profile is a graph of its own in each model (oro_store), so a
 fact lives as long as any of its assertions: re-adding a long-term fact
@@ -61,7 +65,21 @@ is gone a few milliseconds after.  Tests may set the module's clock
 %
 %   Profile (`longterm`, `shortterm` or `episodic`) named by Name, in
 %   any case; `default` and unknown names are `longterm` (ORO-SPEC §9).
+%   Name may also be lifespan(Units), Units a positive number of time
+%   units, which is its own Profile.
+%
+%   @error domain_error(oro_lifespan, Units) for a lifespan that is
+%          not a positive number.
 
+oro_memory_profile(Spec, Profile) :-
+    compound(Spec),
+    Spec = lifespan(Units),
+    !,
+    (   number(Units),
+        Units > 0
+    ->  Profile = Spec
+    ;   domain_error(oro_lifespan, Units)
+    ).
 oro_memory_profile(Name, Profile) :-
     must_be(text, Name),
     atom_string(Atom0, Name),
@@ -78,7 +96,10 @@ oro_memory_profile(Name, Profile) :-
 oro_memory_lifetime(Profile, Ms) :-
     profile_units(Profile, Units),
     setting(time_base, Base),
-    Ms is Units * Base.
+    Ms is ceiling(Units * Base).
+
+profile_units(lifespan(Units), Units) :-
+    !.
 
 profile_units(shortterm, 10).
 profile_units(episodic, 300).
@@ -88,13 +109,16 @@ profile_units(episodic, 300).
 %   Start (or restart) the lifetime in Profile of the Triples that were
 %   just asserted in the Profile graph of Model.  Long-term triples and
 %   triples that were not stored in that graph (they live forever) are
-%   ignored.  Must run inside oro_store_write/2, so that setting a
-%   deadline and forgetting are serialised.
+%   ignored.  A lifespan(Units) sets the deadline of its triples in the
+%   `timed` graph, replacing the one they had there.  Must run inside
+%   oro_store_write/2, so that setting a deadline and forgetting are
+%   serialised.
 
-oro_memory_remember(Model, Profile, Triples) :-
-    (   oro_memory_lifetime(Profile, Lifetime)
+oro_memory_remember(Model, Profile0, Triples) :-
+    (   oro_memory_lifetime(Profile0, Lifetime)
     ->  now_ms(Now),
         Deadline is ceiling(Now) + Lifetime,
+        oro_profile_layer(Profile0, Profile),
         oro_graph(Model, profile(Profile), Graph),
         findall(deadline(Model, Profile, S, P, Stored, Deadline),
                 ( member(rdf(S, P, O), Triples),
@@ -155,7 +179,8 @@ oro_memory_reset :-
 %   short-term and episodic fact found in the models its deadline
 %   again, as committed with the fact, and forget at once those whose
 %   deadline has passed.  A fact whose deadline record is missing gets
-%   a full lifetime from now.
+%   a full lifetime from now; one that had a lifespan of its own
+%   (`timed`) is forgotten.
 
 oro_memory_restore :-
     oro_persist_records(Records),
@@ -165,13 +190,14 @@ oro_memory_restore :-
     Now is ceiling(NowMs),
     findall(deadline(Model, Profile, S, P, O, D),
             ( oro_model(Model),
-              member(Profile, [shortterm, episodic]),
+              member(Profile, [shortterm, episodic, timed]),
               oro_graph(Model, profile(Profile), Graph),
               rdf(S, P, O, Graph),
               (   rb_lookup(Model-Profile-S-P-O, D0, Known)
               ->  D = D0
-              ;   oro_memory_lifetime(Profile, Lifetime),
-                  D is Now + Lifetime
+              ;   oro_memory_lifetime(Profile, Lifetime)
+              ->  D is Now + Lifetime
+              ;   D = Now                   % a lifespan of its own, lost
               )
             ),
             Entries),

@@ -11,6 +11,7 @@
             oro_stored_term/4,          % +S, +P, +O, -Stored
             oro_asserted_count/2,       % +Model, -Count
             oro_store_assert/3,         % +Model, +Triples, +Profile
+            oro_profile_layer/2,        % +Profile, -LayerProfile
             oro_store_retract/2,        % +Model, +Triples
             oro_store_forget/3,         % +Model, +Profile, +Triples
             oro_store_write/2,          % +Action, :Goal
@@ -116,8 +117,9 @@ bench/RESULTS.md).
 %!  oro_graph(+Model, +Layer, -Graph) is det.
 %
 %   The rdf_db graph holding Layer of Model.  Layer is `mask` or
-%   profile(Profile) with Profile one of `longterm`, `shortterm` or
-%   `episodic`.  The graphs of an existing model are those named when
+%   profile(Profile) with Profile one of `longterm`, `shortterm`,
+%   `episodic` or `timed` (facts given a lifespan of their own, see
+%   oro_memory).  The graphs of an existing model are those named when
 %   it was created (create_model/1).  Graph names are spelled by
 %   graph_name/3 alone, through model_graph_of/3 for a model's and
 %   oro_shared_graph/2 for the others.
@@ -187,6 +189,15 @@ encoded_bytes(C, N0, N) :-
 layer_name(profile(Profile), Profile).
 layer_name(mask, mask).
 
+%!  oro_profile_layer(+Profile, -LayerProfile) is det.
+%
+%   The profile whose graph holds the facts of memory Profile: a fact
+%   given its own lifespan(Seconds) lives in the graph of `timed`.
+
+oro_profile_layer(lifespan(_), timed) :-
+    !.
+oro_profile_layer(Profile, Profile).
+
 %!  oro_graph_layer(?Graph, ?Model, ?Layer) is nondet.
 %
 %   True when Graph is the graph of Layer of the existing Model.
@@ -234,6 +245,7 @@ create_model(Model) :-
 model_layer(profile(longterm)).
 model_layer(profile(shortterm)).
 model_layer(profile(episodic)).
+model_layer(profile(timed)).
 model_layer(mask).
 
 %!  oro_model_alias(?Alias, ?Model) is nondet.
@@ -411,11 +423,13 @@ schema_hooks :-
 
 %!  oro_store_assert(+Model, +Triples, +Profile) is det.
 %
-%   Assert each rdf(S,P,O) of Triples in Model with memory Profile.
+%   Assert each rdf(S,P,O) of Triples in Model with memory Profile
+%   (lifespan(Seconds) goes in the graph of the `timed` profile).
 %   Triples already visible are left alone; a masked ontology triple
 %   is made visible again.  Must run inside oro_store_write/2.
 
-oro_store_assert(Model, Triples, Profile) :-
+oro_store_assert(Model, Triples, Profile0) :-
+    oro_profile_layer(Profile0, Profile),
     oro_graph(Model, profile(Profile), Graph),
     oro_graph(Model, mask, Mask),
     maplist(assert_triple(Graph, Mask, Model, Profile), Triples).
