@@ -30,7 +30,7 @@ a socket framed like ORO's: a method line, one line per parameter and
     list of bindings;
   - `close` ends the connection without a reply.
 
-The dialect is served on a port of its own (`--kb-port`, 6970 on the
+The dialect is served on a port of its own (`--kb-port`, 6971 on the
 command line): the ORO protocol's parameters are often valid JSON too
 (`["a b c"]`), so a request cannot tell its dialect, and ORO clients
 on port 6969 must see no change.  Both listeners serve the same store,
@@ -62,7 +62,7 @@ whatever happens.
 
 oro_kbapi_start(Options, Listener) :-
     must_be(list, Options),
-    option(port(Port0), Options, 6970),
+    option(port(Port0), Options, 6971),
     must_be(between(0, 65535), Port0),
     option(host(Host), Options, '127.0.0.1'),
     (   Port0 =:= 0

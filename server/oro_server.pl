@@ -113,7 +113,7 @@ Options:
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
   --kb-port=N        Also serve the KB-API dialect (knowledge_core, pykb)
-                     on port N (default 6970, or a free one with --port=0;
+                     on port N (default 6971, or a free one with --port=0;
                      0 picks a free one)
   --no-kb            Serve the ORO protocol only
   -h, --help         Show this help
@@ -252,7 +252,7 @@ loopback(Host) :-
     memberchk(Host, ['127.0.0.1', localhost, '::1']).
 
 %   kb_port_option(+Options0, -Options): on the command line the KB-API
-%   is served on port 6970 (on a free port with --port=0) unless
+%   is served on port 6971 (on a free port with --port=0) unless
 %   --kb-port says otherwise or --no-kb turns it off.
 
 kb_port_option(Options0, Options) :-
@@ -262,7 +262,7 @@ kb_port_option(Options0, Options) :-
     ->  Options = Options0
     ;   option(port(0), Options0)
     ->  Options = [kb_port(0)|Options0]
-    ;   Options = [kb_port(6970)|Options0]
+    ;   Options = [kb_port(6971)|Options0]
     ).
 
 %!  oro_server_kb_port(+Server, -Port) is semidet.

@@ -16,7 +16,7 @@ and oro's extras ``check_consistency``, ``explain``, ``similarities``...)
 become methods of ``KB`` when it connects, as pykb builds them from the
 server's ``methods`` list.  Standard library only; Python >= 3.9.
 
-oro serves the KB-API on port 6970 by default (6969 is the ORO
+oro serves the KB-API on port 6971 by default (6969 is the ORO
 protocol), which is ``KB()``'s default port here.
 """
 
@@ -31,7 +31,7 @@ import threading
 
 __all__ = ["KB", "KbError", "DEFAULT_PORT"]
 
-DEFAULT_PORT = 6970
+DEFAULT_PORT = 6971
 MSG_SEPARATOR = "#end#"
 
 kblogger = logging.getLogger("kb")
