@@ -14,14 +14,14 @@
 :- use_module(library(settings)).
 :- use_module(library(apply), [include/3]).
 :- use_module(library(lists), [delete/3]).
-:- use_module('../prolog/oro').
-:- use_module(oro_protocol).
-:- use_module(oro_methods).
-:- use_module(oro_methods_sparql).
-:- use_module(oro_methods_categorization).
-:- use_module(oro_methods_explain).
-:- use_module(oro_plugins).
-:- use_module(oro_kbapi).
+:- use_module(oro).
+:- use_module('../server/oro_protocol').
+:- use_module('../server/oro_methods').
+:- use_module('../server/oro_methods_sparql').
+:- use_module('../server/oro_methods_categorization').
+:- use_module('../server/oro_methods_explain').
+:- use_module('../server/oro_plugins').
+:- use_module('../server/oro_kbapi').
 
 /** <module> The ORO socket server
 
