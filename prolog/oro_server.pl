@@ -3,7 +3,10 @@
             oro_server_stop/1,          % +Server
             oro_server_shutdown/1,      % +Server
             oro_server_port/2,          % +Server, -Port
-            oro_server_connections/2    % +Server, -Count
+            oro_server_connections/2,   % +Server, -Count
+            oro_server_main/0,
+            oro_server_main/1,          % +Argv
+            oro_server_arguments/1      % -Argv
           ]).
 :- use_module(library(socket)).
 :- use_module(library(main), [argv_options/3]).
@@ -12,7 +15,7 @@
 :- use_module(library(debug)).
 :- use_module(library(settings)).
 :- use_module(library(apply), [include/3]).
-:- use_module(library(lists), [delete/3]).
+:- use_module(library(lists), [delete/3, append/3]).
 :- use_module(oro).
 :- use_module('../server/oro_protocol').
 :- use_module('../server/oro_methods').
@@ -37,19 +40,11 @@ store); a slow or broken client only holds its own worker.  Every
 connection is closed and released by setup_call_cleanup/3, whatever
 happens.
 
-The server starts from main/0 (the command line) or
-oro_server_start/2 (tests, embedding); loading this file starts
-nothing.
+The server starts from oro_server_main/0,1 (the command line: the
+script server/oro_server.pl, or `swipl -g oro_server_main` once
+library(oro_server) is loaded) or oro_server_start/2 (tests,
+embedding); loading this library starts nothing.
 */
-
-%   Run main/0 only when this file is the script swipl was started with,
-%   so that tests and programs can load the module without starting it.
-
-:- prolog_load_context(file, File),
-   (   current_prolog_flag(associated_file, File)
-   ->  initialization(main, main)
-   ;   true
-   ).
 
 :- dynamic
     connection/1,                   % Mutex of a live connection
@@ -87,6 +82,7 @@ opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
+   or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
 
 oro: a knowledge server for cognitive robots, speaking the ORO protocol.
 
@@ -111,12 +107,58 @@ Options:
   -h, --help         Show this help
 ").
 
-%!  main is det.
+%!  oro_server_main is det.
 %
-%   Start the server from the command line and serve until killed.
+%   Start the server with the options of the command line
+%   (oro_server_arguments/1) and serve until SIGTERM or SIGINT, then
+%   halt.
 
-main :-
-    current_prolog_flag(argv, Argv),
+oro_server_main :-
+    oro_server_arguments(Argv),
+    oro_server_main(Argv).
+
+%!  oro_server_arguments(-Argv) is det.
+%
+%   Argv are the arguments of the command line meant for the server.
+%   When swipl was started with a script (`swipl server/oro_server.pl
+%   Arg ...`), they are every argument after the script, taken from
+%   the Prolog flag `os_argv`: swipl takes the arguments right after
+%   the script whose name ends in `.pl` (`--plugin=x.pl`) for more
+%   files to load and removes them from the flag `argv`, so that flag
+%   alone would lose them.  A leading `--` is dropped.  Otherwise (as in
+%   `swipl -g oro_server_main -- Arg ...`) they are the flag `argv`.
+
+oro_server_arguments(Argv) :-
+    (   current_prolog_flag(associated_file, Script),
+        current_prolog_flag(os_argv, [_|OsArgv]),
+        append(_, [OsScript|Rest], OsArgv),
+        script_file(OsScript, Script)
+    ->  (   Rest = [--|Argv0]
+        ->  true
+        ;   Argv0 = Rest
+        )
+    ;   current_prolog_flag(argv, Argv0)
+    ),
+    Argv = Argv0.
+
+%   script_file(+OsFile, +Script): the argument OsFile names the file
+%   Script, as swipl resolved it for the flag associated_file.
+
+script_file(OsFile, Script) :-
+    catch(( prolog_to_os_filename(File, OsFile),
+            absolute_file_name(File, Path)
+          ), _, fail),
+    Path == Script.
+
+%!  oro_server_main(+Argv) is det.
+%
+%   Start the server with the command-line arguments Argv (see
+%   `--help`), in any order, and serve until SIGTERM or SIGINT, then
+%   halt: halt(0) after a clean shutdown, halt(1) when an argument or
+%   the start is refused, with the reason on stderr.
+
+oro_server_main(Argv) :-
+    must_be(list(atomic), Argv),
     (   ( memberchk('--help', Argv) ; memberchk('-h', Argv) )
     ->  usage(Usage),
         format("~w", [Usage]),

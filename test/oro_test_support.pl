@@ -561,8 +561,9 @@ test_map(Reply, Pairs) :-
 
 %!  test_cli_server(+Args, -Port, :Goal, -Stderr) is det.
 %
-%   Run the real command line, `swipl server/oro_server.pl --port=0
-%   Args`, as a child process in the checkout (killed after 60 s at
+%   Run the real command line, `swipl server/oro_server.pl Args
+%   --port=0` (Args first, as swipl could take them for files to
+%   load), as a child process in the checkout (killed after 60 s at
 %   most), wait for its listening line, run Goal once, stop the
 %   server.  Port is the port it listens on, or `none` (and Goal is not
 %   run) if it printed no listening line; Stderr is what it printed on
@@ -571,8 +572,9 @@ test_map(Reply, Pairs) :-
 test_cli_server(Args, Port, Goal, Stderr) :-
     test_checkout_path('server/oro_server.pl', Server),
     test_checkout_path('.', Checkout),
+    append(Args, ['--port=0'], AllArgs),
     setup_call_cleanup(
-        process_create(path(timeout), ['60', swipl, Server, '--port=0'|Args],
+        process_create(path(timeout), ['60', swipl, Server|AllArgs],
                        [ stdout(pipe(Out)), stderr(pipe(Err)),
                          cwd(Checkout), process(Pid)
                        ]),

@@ -78,6 +78,20 @@ test(zero_time_base, [true(Code-Said == 1-true)]) :-
 test(rebuild_garbage, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
     test_cli_server(['--rebuild-garbage=0'], Port,
                     request(Port, [hello], Reply), _).
+
+%   swipl takes the arguments right after a script whose names end in
+%   .pl for more files to load: the server reads them all the same
+%   (the README's plugin command), and refuses a bare file name.
+
+test(plugin_option_first, [true(Reply == ["ok", "3", "#end#"])]) :-
+    test_cli_server(['--plugin=examples/plugins/count_instances.pl',
+                     '--no-commonsense', '--ontology=test/fixtures/testsuite.ttl'],
+                    Port,
+                    request(Port, [countInstancesOf, 'Animal'], Reply), _).
+test(bare_file_name_refused, [true(Code-Said == 1-true)]) :-
+    test_checkout_path('examples/plugins/count_instances.pl', Plugin),
+    cli_run([Plugin], Code, Output),
+    test_bool(sub_string(Output, _, _, _, "unexpected argument"), Said).
 test(missing_ontology, [true(Code \== 0)]) :-
     cli_run(['--ontology=/nonexistent/x.owl'], Code, _).
 test(listening_default_ontology, [true(Reply == ["ok", "\"oro-server 0.8.2\"", "#end#"])]) :-
