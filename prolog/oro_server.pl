@@ -14,6 +14,7 @@
 :- use_module(library(error)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
+:- use_module(library(aggregate)).
 :- use_module(library(apply), [include/3]).
 :- use_module(library(lists), [delete/3, append/3]).
 :- use_module(oro).
@@ -23,6 +24,8 @@
 :- use_module('../server/oro_methods_categorization').
 :- use_module('../server/oro_methods_explain').
 :- use_module('../server/oro_plugins').
+:- use_module('../server/oro_log').
+:- use_module('../server/oro_cli').
 
 /** <module> The ORO socket server
 
@@ -51,6 +54,12 @@ embedding); loading this library starts nothing.
     closed_connection/1,            % Mutex of one the shutdown closed
     workers/3.                      % Jobs, Busy, Idle: see CONNECTION WORKERS
 
+:- setting(port, between(0, 65535), 6969,
+           'TCP port the command line listens on (0: a free one)').
+:- setting(host, atom, '127.0.0.1',
+           'Address the command line listens on').
+:- setting(rebuild_garbage, nonneg, 1000000,
+           'Value of oro_store:rebuild_garbage for the command line').
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
 :- setting(spare_workers, nonneg, 4,
@@ -80,6 +89,10 @@ opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
+opt_type(config, config, file(read)).
+opt_type(log, log, atom).
+opt_type(log_payload, log_payload, boolean).
+opt_type(debug, debug, atom).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
    or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
@@ -104,7 +117,16 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
+  --config=FILE      Read settings from FILE: terms setting(Name, Value)
+                     or setting(Module:Name, Value), one per line
+  --log=FILE         Append a line per request to FILE: time, connection,
+                     client, method, duration, outcome (SIGHUP reopens it)
+  --log-payload      Also log the parameters of each request
+  --debug=TOPIC      Print the debug/3 messages of TOPIC, e.g. 'oro(server)';
+                     repeatable
   -h, --help         Show this help
+
+Settings, each also an option (and a setting(Name, Value) of --config):
 ").
 
 %!  oro_server_main is det.
@@ -161,23 +183,30 @@ oro_server_main(Argv) :-
     must_be(list(atomic), Argv),
     (   ( memberchk('--help', Argv) ; memberchk('-h', Argv) )
     ->  usage(Usage),
-        format("~w", [Usage]),
+        oro_cli_settings_help(Settings),
+        format("~w~w", [Usage, Settings]),
         halt(0)
     ;   true
     ),
-    argv_options(Argv, Positional, Options),
+    catch(oro_cli_options(Argv, Positional, Options0), E0,
+          ( print_message(error, E0),
+            halt(1)
+          )),
+    command_line_defaults(Options0, Options),
     (   Positional == []
     ->  true
     ;   format(user_error, "oro: unexpected argument(s) ~w (see --help)~n",
                [Positional]),
         halt(1)
     ),
-    catch(oro_server_start(Options, Server), E,
+    catch(( start_log(Options),
+            oro_server_start([silent(false)|Options], Server)
+          ), E,
           ( print_message(error, E),
             halt(1)
           )),
     oro_server_port(Server, Port),
-    option(host(Host), Options, '127.0.0.1'),
+    option(host(Host), Options),
     (   loopback(Host)
     ->  true
     ;   format(user_error, "Warning: listening on ~w: the ORO protocol has no \c
@@ -186,13 +215,55 @@ oro_server_main(Argv) :-
     ),
     on_signal(term, _, shutdown_signal),
     on_signal(int, _, shutdown_signal),
+    on_signal(hup, _, reopen_signal),
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
     flush_output,
     load_sparql_engine,
-    thread_get_message(oro_server_stop),
+    serve_until_stopped,
     oro_server_shutdown(Server),
+    oro_log_close,
     halt(0).
+
+%   command_line_defaults(+Options0, -Options): the options of the
+%   command line, with the defaults of those not given taken from the
+%   settings (which --config may have set).
+
+command_line_defaults(Options0, Options) :-
+    setting(port, Port),
+    setting(host, Host),
+    setting(rebuild_garbage, Garbage),
+    setting(oro_knowledge:robot_id, RobotId),
+    setting(oro_knowledge:save_dir, SaveDir),
+    setting(oro_memory:time_base, TimeBase),
+    merge_options(Options0,
+                  [ port(Port), host(Host), rebuild_garbage(Garbage),
+                    robot_id(RobotId), save_dir(SaveDir),
+                    time_base(TimeBase)
+                  ],
+                  Options).
+
+start_log(Options) :-
+    (   option(log(File), Options)
+    ->  option(log_payload(Payload), Options, false),
+        oro_log_open(File, [payload(Payload)])
+    ;   true
+    ).
+
+%   serve_until_stopped: main waits for SIGTERM or SIGINT
+%   (shutdown_signal/1), reopening the log on each SIGHUP meanwhile.
+
+serve_until_stopped :-
+    thread_get_message(Message),
+    (   Message == oro_server_reopen_log
+    ->  oro_log_reopen,
+        debug(oro(server), 'Log reopened', []),
+        serve_until_stopped
+    ;   true
+    ).
+
+reopen_signal(_Signal) :-
+    thread_send_message(main, oro_server_reopen_log).
 
 %   load_sparql_engine: main, idle once the server listens, loads the
 %   SPARQL engine (see oro_sparql), so that the first query rarely
@@ -289,8 +360,9 @@ loopback(Host) :-
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
-%   oro_store_rebuild/0; every request runs in oro_store_read/1).
-%   Server is an opaque handle.
+%   oro_store_rebuild/0; every request runs in oro_store_read/1),
+%   silent(Bool) (default true; false reports the ontology loads: see
+%   oro_init/1).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -310,8 +382,10 @@ oro_server_start(Options, Server) :-
     option(db(Db), Options, ''),
     option(rebuild_garbage(Garbage), Options, 1000000),
     must_be(nonneg, Garbage),
+    option(silent(Silent), Options, true),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
+               silent(Silent),
                commonsense(CommonSense),
                ontologies(Files),
                robot_id(RobotId),
@@ -355,6 +429,14 @@ oro_server_connections(Server, Count) :-
     ->  Count = Busy
     ;   Count = 0                           % stopped, and none left
     ).
+
+%   The connections being served, for the stats method.
+
+:- multifile
+    oro_methods:server_figure/2.
+
+oro_methods:server_figure(connections, Count) :-
+    aggregate_all(count, connection(_), Count).
 
 %!  oro_server_stop(+Server) is det.
 %
@@ -683,7 +765,10 @@ serve_stream(Server, Serial, Pair, Peer) :-
         ( mutex_create(Mutex),
           with_mutex(oro_connections, assertz(connection(Mutex)))
         ),
-        ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
+        ( flag(oro_server_connection, Id0, Id0 + 1),
+          Id is Id0 + 1,
+          Context = _{started:Server.started, peer:Peer, in:In, out:Out,
+                      id:Id,
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
                       max_params:MaxParams},
@@ -807,7 +892,11 @@ answer(Context, Prepared, Out) :-
 
 answer(Mutex, Context, Prepared, Out) :-
     \+ closed_connection(Mutex),
+    get_time(Start),
     oro_store_read(oro_perform(Context, Prepared, Reply)),
+    get_time(End),
+    Seconds is End - Start,
+    oro_log_request(Context.id, Context.peer, Prepared, Seconds, Reply),
     write_reply(Reply, Out).
 
 write_reply(ok(Value), Out) :-

@@ -7,8 +7,8 @@
     pack_install('.') does).  What a pack ships is what `git archive`
     gives (the `download` archive): .gitattributes leaves out test/,
     bench/ and .ci/.  So the tests install the directory that `git
-    archive` of the working tree (git stash create: tracked files as
-    they are now) extracts to.  Without git, or outside a git checkout,
+    archive` of the working tree extracts to (every file git does not
+    ignore, as it is now: added to a scratch index, written as a tree).  Without git, or outside a git checkout,
     they print a notice and are skipped.
 */
 
@@ -21,11 +21,11 @@
 :- use_module(library(apply)).
 
 :- dynamic
-    pack_install_dir/2.                 % TmpDir, PackDir
+    tp_pack_install_dir/2.                 % TmpDir, PackDir
 
-%   pack_exportable: git can export the checkout.
+%   tp_pack_exportable: git can export the checkout.
 
-pack_exportable :-
+tp_pack_exportable :-
     test_checkout_path('.', Checkout),
     (   catch(process_create(path(git), ['rev-parse', '--git-dir'],
                              [ cwd(Checkout), stdout(null), stderr(null),
@@ -39,10 +39,10 @@ pack_exportable :-
         fail
     ).
 
-%   install_pack: export the checkout, install it into a fresh pack
+%   tp_install_pack: export the checkout, install it into a fresh pack
 %   directory (a child swipl, from an unrelated directory).
 
-install_pack :-
+tp_install_pack :-
     tmp_file(oro_pack, Tmp),
     make_directory(Tmp),
     directory_file_path(Tmp, 'src/oro', Src),
@@ -51,23 +51,26 @@ install_pack :-
     make_directory_path(Src),
     make_directory(Packs),
     make_directory(Elsewhere),
-    asserta(pack_install_dir(Tmp, Packs)),
+    asserta(tp_pack_install_dir(Tmp, Packs)),
     test_checkout_path('.', Checkout),
-    run(sh, ['-c', 'c=$(git stash create) && git archive --worktree-attributes "${c:-HEAD}" | tar -x -C "$1"',
-                   sh, Src],
-        Checkout),
+    directory_file_path(Tmp, index, Index),
+    tp_run(sh, ['-c', 'export GIT_INDEX_FILE="$1" && git add -A && \c
+                       git archive --worktree-attributes "$(git write-tree)" | \c
+                       tar -x -C "$2"',
+                sh, Index, Src],
+           Checkout),
     uri_file_name(URL, Src),
     format(atom(Goal), "pack_install(~q, [package_directory(~q), interactive(false)])",
            [URL, Packs]),
-    run(swipl, ['-g', Goal, '-t', halt], Elsewhere).
+    tp_run(swipl, ['-g', Goal, '-t', halt], Elsewhere).
 
-uninstall_pack :-
-    forall(retract(pack_install_dir(Tmp, _)),
+tp_uninstall_pack :-
+    forall(retract(tp_pack_install_dir(Tmp, _)),
            delete_directory_and_contents(Tmp)).
 
-%   run(+Exe, +Args, +Dir): run Exe in Dir (at most 60 s); it must exit 0.
+%   tp_run(+Exe, +Args, +Dir): run Exe in Dir (at most 60 s); it must exit 0.
 
-run(Exe, Args, Dir) :-
+tp_run(Exe, Args, Dir) :-
     process_create(path(timeout), ['60', Exe|Args],
                    [ cwd(Dir), stdout(pipe(Out)), stderr(pipe(Err)),
                      process(Pid)
@@ -83,17 +86,17 @@ run(Exe, Args, Dir) :-
         fail
     ).
 
-installed(Relative, Path) :-
-    pack_install_dir(_, Packs),
+tp_installed(Relative, Path) :-
+    tp_pack_install_dir(_, Packs),
     atomic_list_concat([Packs, '/oro/', Relative], Path).
 
-elsewhere(Dir) :-
-    pack_install_dir(Tmp, _),
+tp_elsewhere(Dir) :-
+    tp_pack_install_dir(Tmp, _),
     directory_file_path(Tmp, elsewhere, Dir).
 
 %   The output of a child swipl, one term per line.
 
-child_terms(Args, Dir, Terms) :-
+tp_child_terms(Args, Dir, Terms) :-
     setup_call_cleanup(
         process_create(path(timeout), ['60', swipl|Args],
                        [ cwd(Dir), stdout(pipe(Out)), process(Pid) ]),
@@ -103,19 +106,19 @@ child_terms(Args, Dir, Terms) :-
         close(Out)),
     split_string(Text, "\n", "", Lines0),
     exclude(==(""), Lines0, Lines),
-    maplist(line_term, Lines, Terms).
+    maplist(tp_line_term, Lines, Terms).
 
-line_term(Line, Term) :-
+tp_line_term(Line, Term) :-
     term_string(Term, Line).
 
-count_cups(Port, Reply) :-
+tp_count_cups(Port, Reply) :-
     setup_call_cleanup(oro_connect(Port, Conn),
                        oro_call(Conn, countInstancesOf, ["Cup"], Reply),
                        oro_disconnect(Conn)).
 
-:- begin_tests(pack_install, [ condition(pack_exportable),
-                               setup(install_pack),
-                               cleanup(uninstall_pack)
+:- begin_tests(pack_install, [ condition(tp_pack_exportable),
+                               setup(tp_install_pack),
+                               cleanup(tp_uninstall_pack)
                              ]).
 
 test(ships_library_server_ontology_examples, true(Missing == [])) :-
@@ -126,14 +129,14 @@ test(ships_library_server_ontology_examples, true(Missing == [])) :-
                           'ontologies/commonsense.ttl',
                           'examples/plugins/count_instances.pl'
                         ]),
-              installed(F, Path),
+              tp_installed(F, Path),
               \+ exists_file(Path)
             ),
             Missing).
 test(no_tests_nor_benchmarks, true(Shipped == [])) :-
     findall(D,
             ( member(D, [test, bench, '.ci', '.git']),
-              installed(D, Path),
+              tp_installed(D, Path),
               exists_directory(Path)
             ),
             Shipped).
@@ -143,11 +146,11 @@ test(no_tests_nor_benchmarks, true(Shipped == [])) :-
 
 test(library_and_embedded_server, true(Terms == Expected)) :-
     test_fixture('pack_user.pl', User),
-    pack_install_dir(_, Packs),
-    elsewhere(Dir),
-    child_terms([User, Packs], Dir, Terms),
-    installed('prolog/oro.pl', OroFile),
-    installed('prolog/oro_server.pl', ServerFile),
+    tp_pack_install_dir(_, Packs),
+    tp_elsewhere(Dir),
+    tp_child_terms([User, Packs], Dir, Terms),
+    tp_installed('prolog/oro.pl', OroFile),
+    tp_installed('prolog/oro_server.pl', ServerFile),
     atom_concat('http://kb.openrobots.org#', fork1, Fork),
     Expected = [ library(OroFile, [Fork]),
                  server(ServerFile, [ ["ok", "", "#end#"],
@@ -155,23 +158,23 @@ test(library_and_embedded_server, true(Terms == Expected)) :-
                                     ])
                ].
 test(script_plugin_option_first, true(Reply = ok(_))) :-
-    installed('server/oro_server.pl', Script),
-    installed('examples/plugins/count_instances.pl', Plugin),
+    tp_installed('server/oro_server.pl', Script),
+    tp_installed('examples/plugins/count_instances.pl', Plugin),
     atom_concat('--plugin=', Plugin, PluginOption),
-    elsewhere(Dir),
+    tp_elsewhere(Dir),
     test_server_process([Script, PluginOption, '--port=0'], Dir, Port,
-                        count_cups(Port, Reply), _).
+                        tp_count_cups(Port, Reply), _).
 test(library_main_plugin_option_first, true(Reply = ok(_))) :-
-    pack_install_dir(_, Packs),
-    installed('examples/plugins/count_instances.pl', Plugin),
+    tp_pack_install_dir(_, Packs),
+    tp_installed('examples/plugins/count_instances.pl', Plugin),
     atom_concat('--plugin=', Plugin, PluginOption),
     format(atom(Attach), "attach_packs(~q, [])", [Packs]),
-    elsewhere(Dir),
+    tp_elsewhere(Dir),
     test_server_process([ '-g', Attach,
                           '-g', 'use_module(library(oro_server))',
                           '-g', oro_server_main,
                           '--', PluginOption, '--port=0'
                         ],
-                        Dir, Port, count_cups(Port, Reply), _).
+                        Dir, Port, tp_count_cups(Port, Reply), _).
 
 :- end_tests(pack_install).
