@@ -19,7 +19,7 @@
 :- use_module('../prolog/oro/oro_parse').
 :- use_module('../prolog/oro/oro_names').
 :- use_module('../prolog/oro/oro_store').
-:- use_module(oro_errors).
+:- use_module('../prolog/oro/oro_errors').
 :- use_module(oro_protocol).
 
 /** <module> The ORO method table and dispatcher
