@@ -281,7 +281,7 @@ load_sparql_engine :-
 %   runs it.  With SWI-Prolog 9.0.4 a thread that has been created but
 %   has not run yet drops it.  A supervisor that stops the server right
 %   after it said it listens hit that window: on one core, 4 stops in
-%   60 were lost (a scratch loop; bench/RESULTS.md).  So main announces
+%   60 were lost (a scratch loop; git log of bench/RESULTS.md).  So main announces
 %   that it listens only once every other thread has run a goal it sent
 %   it (threads_settled/0): after that, 0 in 90.  A connection is
 %   served by a worker made at start (see CONNECTION WORKERS), not by a
@@ -678,7 +678,7 @@ serve_job(Server, Serial, Client, Peer) :-
 
 %   release_stacks: a worker whose stacks grew past 4 MB (a large
 %   request) gives them back before it waits.  Trimming small ones
-%   would slow every connection for nothing (bench/RESULTS.md).
+%   would slow every connection for nothing (git log of bench/RESULTS.md).
 
 release_stacks :-
     statistics(global, Global),

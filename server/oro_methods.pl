@@ -179,7 +179,7 @@ statements_param(updateForAgent(string, set), 2).
 %   parse_ahead(+N, +Args0, -Args): the Nth argument, statements as
 %   text, replaced by their triples if they are all complete statements.
 %   (oro_statements/3 normalises such triples again, at a fifth of the
-%   cost of parsing them: bench/RESULTS.md.)
+%   cost of parsing them: git log of bench/RESULTS.md.)
 
 parse_ahead(N, Args0, Args) :-
     nth1(N, Args0, Statements, Rest),

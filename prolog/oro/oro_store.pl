@@ -109,8 +109,8 @@ collector.  Once a program has erased clauses it held references to
 SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
 run of that collector.  With three or four clauses retracted a write,
 a server adding one statement at a time ran both collectors every 12
-writes; they took 12 to 37 us of CPU a write (bench/bench_writes.pl,
-bench/RESULTS.md).
+writes; they took 12 to 37 us of CPU a write (measured with a
+benchmark since retired, bench/bench_writes.pl: see git log).
 */
 
 :- dynamic
@@ -386,7 +386,7 @@ oro_store_write(Action, Goal) :-
 %   `oro_write` mutex.  (The goals given to with_mutex/2 and
 %   setup_call_cleanup/3 here and in store_write/2 are named
 %   predicates: a meta-called conjunction or if-then-else is compiled
-%   to a temporary clause on every call; bench/RESULTS.md, "A request's
+%   to a temporary clause on every call; the history of bench/RESULTS.md, "A request's
 %   fixed cost".)
 
 locked_write(Action, Goal) :-
