@@ -90,7 +90,7 @@ api_error_formal(Formal) :-
     \+ ( copy_term(Formal, Copy),
          term_variables(Copy, Vars),
          maplist(=(x), Vars),
-         oro_errors:swi_formal(Copy)
+         oro_errors:own_message(Copy)
        ).
 api_error_formal(Formal) :-
     clause(oro_errors:api_error(Formal, _, _), _).

@@ -40,16 +40,18 @@ prolog:error_message(Formal) -->
     [ Format-Args ].
 
 %   oro_formal(+Formal): Formal is an error term of oro's, not one of
-%   SWI-Prolog's that the table also names (those keep their message).
+%   SWI-Prolog's that the table also names (those keep their message),
+%   nor one whose module has its own translation (own_message/1).
 
 oro_formal(Formal) :-
     nonvar(Formal),
-    \+ swi_formal(Formal).
+    \+ own_message(Formal).
 
-swi_formal(existence_error(source_sink, _)).
-swi_formal(resource_error(Resource)) :-
+own_message(existence_error(source_sink, _)).
+own_message(resource_error(Resource)) :-
     Resource \= oro_query_time_limit(_).
-swi_formal(domain_error(uuid, _)).
+own_message(domain_error(uuid, _)).
+own_message(syntax_error(oro_sparql(_, _))).    % oro_sparql_engine
 
 formal_text(Formal, Format, Args) :-
     (   error_table(Formal, _, Format, Args)
