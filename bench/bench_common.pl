@@ -70,9 +70,9 @@
 
 /** <module> What the oro benchmarks share
 
-The benchmarks in this directory (bench.pl, bench_events.pl,
-bench_agents.pl, bench_sparql.pl, bench_categorization.pl) are
-scripts; this module holds what they have in common:
+The benchmarks in this directory (bench_full.pl and the focused ones
+the README lists) are scripts; this module holds what they have in
+common:
 
   - the machine line printed first (SWI-Prolog version and CPU);
   - a command-line option taking one number or several
@@ -88,7 +88,7 @@ scripts; this module holds what they have in common:
   - timing a goal, N samples of it (optionally within a time budget),
     their median, 99th percentile and maximum;
   - the common table (operation, size, median, p99, per second);
-  - bench.pl's synthetic robot world, 4 triples an object;
+  - the synthetic robot world (bench_world/2), 4 triples an object;
   - the requests of a recorded ORO server log, to replay it.
 
 The client is deliberately leaner than test/oro_test_client.pl: a

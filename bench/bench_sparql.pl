@@ -4,7 +4,7 @@
 
         swipl bench/bench_sparql.pl [--size=100000] [--samples=200]
 
-    The world is bench.pl's synthetic robot world (objects typed under
+    The world is bench_common's synthetic robot world (objects typed under
     common-sense classes, placed on 50 pieces of furniture, coloured and
     visible: 4 triples an object) over the common-sense ontology.  The
     socket figures use a server started in this process on a free port.

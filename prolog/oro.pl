@@ -90,7 +90,14 @@
             % names
             oro_name_iri/2,             % +Text, -IRI
             oro_iri_name/2,             % +IRI, -Text
-            oro_term_text/2             % +Term, -Text
+            oro_term_text/2,            % +Term, -Text
+            oro_rdf11/2,                % +Term, -Rdf11Term
+            % toplevel
+            oro_show/1,                 % +Resource
+            oro_show/2,                 % +Model, +Resource
+            oro_models/0,
+            op(110, xfx, @),
+            op(650, xfx, ^^)
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(oro/oro_names).
@@ -108,6 +115,8 @@
 :- use_module(oro/oro_taxonomy).
 :- use_module(oro/oro_lookup).
 :- use_module(oro/oro_store, [oro_store_read/1, oro_store_rebuild/0]).
+:- use_module(oro/oro_show).
+:- use_module(oro/oro_errors, []).
 
 /** <module> oro: a knowledge server for cognitive robots
 
@@ -126,7 +135,29 @@ Every operation takes the model (agent) first: `myself` (alias
 `default`, or the robot id) is the robot.  Statements are text, as the
 ORO protocol writes them, or rdf(S,P,O) terms; names may be short
 (`fork1`), prefixed (`oro:'Fork'`) or full IRIs.  Loading this module
-makes the toplevel print IRIs of known namespaces as `Prefix:Local`.
+makes the toplevel print IRIs of known namespaces as `Prefix:Local`,
+and oro's errors as sentences (prolog:message//1, oro_errors).
+
+## Literals and library(semweb/rdf11)
+
+An object may be written as rdf11 writes literals, everywhere the API
+takes one (statements, patterns, oro_holds/4...): `"x"^^xsd:string`,
+`3^^xsd:int`, `true^^xsd:boolean`, `date(2024,1,31)^^xsd:date`,
+`"tasse"@fr`, or a plain number (xsd:int or xsd:double) or string
+(xsd:string); rdf_db's literal(type(T, Lex)) terms work too.  Answers
+are rdf_db terms, as the store holds them; oro_rdf11/2 converts any
+answer (a value, a list, triples) to rdf11 terms on request:
+
+    ?- oro_find(myself, w, ["cup1 weight ?w"], L0), oro_rdf11(L0, L).
+    L = [150^^'http://www.w3.org/2001/XMLSchema#int'].
+
+This module exports the operators `^^` and `@` as rdf11 does.
+
+## At the toplevel
+
+oro_show/1,2 prints what a model knows of a resource (labels,
+classes, statements, asserted and inferred told apart); oro_models/0
+lists the models and the size of each of their memory profiles.
 
 The module re-exports the documented predicates of `oro_knowledge`
 (changes, check and find), `oro_reason` (the inference closure),

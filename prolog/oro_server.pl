@@ -4,7 +4,10 @@
             oro_server_shutdown/1,      % +Server
             oro_server_port/2,          % +Server, -Port
             oro_server_connections/2,   % +Server, -Count
-            oro_server_kb_port/2        % +Server, -Port
+            oro_server_kb_port/2,       % +Server, -Port
+            oro_server_main/0,
+            oro_server_main/1,          % +Argv
+            oro_server_arguments/1      % -Argv
           ]).
 :- use_module(library(socket)).
 :- use_module(library(main), [argv_options/3]).
@@ -12,8 +15,9 @@
 :- use_module(library(error)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
+:- use_module(library(aggregate)).
 :- use_module(library(apply), [include/3]).
-:- use_module(library(lists), [delete/3]).
+:- use_module(library(lists), [delete/3, append/3]).
 :- use_module(oro).
 :- use_module('../server/oro_protocol').
 :- use_module('../server/oro_methods').
@@ -22,6 +26,8 @@
 :- use_module('../server/oro_methods_explain').
 :- use_module('../server/oro_plugins').
 :- use_module('../server/oro_kbapi').
+:- use_module('../server/oro_log').
+:- use_module('../server/oro_cli').
 
 /** <module> The ORO socket server
 
@@ -39,25 +45,23 @@ store); a slow or broken client only holds its own worker.  Every
 connection is closed and released by setup_call_cleanup/3, whatever
 happens.
 
-The server starts from main/0 (the command line) or
-oro_server_start/2 (tests, embedding); loading this file starts
-nothing.
+The server starts from oro_server_main/0,1 (the command line: the
+script server/oro_server.pl, or `swipl -g oro_server_main` once
+library(oro_server) is loaded) or oro_server_start/2 (tests,
+embedding); loading this library starts nothing.
 */
-
-%   Run main/0 only when this file is the script swipl was started with,
-%   so that tests and programs can load the module without starting it.
-
-:- prolog_load_context(file, File),
-   (   current_prolog_flag(associated_file, File)
-   ->  initialization(main, main)
-   ;   true
-   ).
 
 :- dynamic
     connection/1,                   % Mutex of a live connection
     closed_connection/1,            % Mutex of one the shutdown closed
     workers/3.                      % Jobs, Busy, Idle: see CONNECTION WORKERS
 
+:- setting(port, between(0, 65535), 6969,
+           'TCP port the command line listens on (0: a free one)').
+:- setting(host, atom, '127.0.0.1',
+           'Address the command line listens on').
+:- setting(rebuild_garbage, nonneg, 1000000,
+           'Value of oro_store:rebuild_garbage for the command line').
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
 :- setting(spare_workers, nonneg, 4,
@@ -89,8 +93,13 @@ opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
 opt_type(kb_port, kb_port, between(0, 65535)).
 opt_type(kb, kb, boolean).
+opt_type(config, config, file(read)).
+opt_type(log, log, atom).
+opt_type(log_payload, log_payload, boolean).
+opt_type(debug, debug, atom).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
+   or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
 
 oro: a knowledge server for cognitive robots, speaking the ORO protocol.
 
@@ -116,22 +125,82 @@ Options:
                      on port N (default 6971, or a free one with --port=0;
                      0 picks a free one)
   --no-kb            Serve the ORO protocol only
+  --config=FILE      Read settings from FILE: terms setting(Name, Value)
+                     or setting(Module:Name, Value), one per line
+  --log=FILE         Append a line per request to FILE: time, connection,
+                     client, method, duration, outcome (SIGHUP reopens it)
+  --log-payload      Also log the parameters of each request
+  --debug=TOPIC      Print the debug/3 messages of TOPIC, e.g. 'oro(server)';
+                     repeatable
   -h, --help         Show this help
+
+Settings, each also an option (and a setting(Name, Value) of --config):
 ").
 
-%!  main is det.
+%!  oro_server_main is det.
 %
-%   Start the server from the command line and serve until killed.
+%   Start the server with the options of the command line
+%   (oro_server_arguments/1) and serve until SIGTERM or SIGINT, then
+%   halt.
 
-main :-
-    current_prolog_flag(argv, Argv),
+oro_server_main :-
+    oro_server_arguments(Argv),
+    oro_server_main(Argv).
+
+%!  oro_server_arguments(-Argv) is det.
+%
+%   Argv are the arguments of the command line meant for the server.
+%   When swipl was started with a script (`swipl server/oro_server.pl
+%   Arg ...`), they are every argument after the script, taken from
+%   the Prolog flag `os_argv`: swipl takes the arguments right after
+%   the script whose name ends in `.pl` (`--plugin=x.pl`) for more
+%   files to load and removes them from the flag `argv`, so that flag
+%   alone would lose them.  A leading `--` is dropped.  Otherwise (as in
+%   `swipl -g oro_server_main -- Arg ...`) they are the flag `argv`.
+
+oro_server_arguments(Argv) :-
+    (   current_prolog_flag(associated_file, Script),
+        current_prolog_flag(os_argv, [_|OsArgv]),
+        append(_, [OsScript|Rest], OsArgv),
+        script_file(OsScript, Script)
+    ->  (   Rest = [--|Argv0]
+        ->  true
+        ;   Argv0 = Rest
+        )
+    ;   current_prolog_flag(argv, Argv0)
+    ),
+    Argv = Argv0.
+
+%   script_file(+OsFile, +Script): the argument OsFile names the file
+%   Script, as swipl resolved it for the flag associated_file.
+
+script_file(OsFile, Script) :-
+    catch(( prolog_to_os_filename(File, OsFile),
+            absolute_file_name(File, Path)
+          ), _, fail),
+    Path == Script.
+
+%!  oro_server_main(+Argv) is det.
+%
+%   Start the server with the command-line arguments Argv (see
+%   `--help`), in any order, and serve until SIGTERM or SIGINT, then
+%   halt: halt(0) after a clean shutdown, halt(1) when an argument or
+%   the start is refused, with the reason on stderr.
+
+oro_server_main(Argv) :-
+    must_be(list(atomic), Argv),
     (   ( memberchk('--help', Argv) ; memberchk('-h', Argv) )
     ->  usage(Usage),
-        format("~w", [Usage]),
+        oro_cli_settings_help(Settings),
+        format("~w~w", [Usage, Settings]),
         halt(0)
     ;   true
     ),
-    argv_options(Argv, Positional, Options),
+    catch(oro_cli_options(Argv, Positional, Options0), E0,
+          ( print_message(error, E0),
+            halt(1)
+          )),
+    command_line_defaults(Options0, Options),
     (   Positional == []
     ->  true
     ;   format(user_error, "oro: unexpected argument(s) ~w (see --help)~n",
@@ -139,12 +208,14 @@ main :-
         halt(1)
     ),
     kb_port_option(Options, Options1),
-    catch(oro_server_start(Options1, Server), E,
+    catch(( start_log(Options1),
+            oro_server_start([silent(false)|Options1], Server)
+          ), E,
           ( print_message(error, E),
             halt(1)
           )),
     oro_server_port(Server, Port),
-    option(host(Host), Options, '127.0.0.1'),
+    option(host(Host), Options),
     (   loopback(Host)
     ->  true
     ;   format(user_error, "Warning: listening on ~w: the ORO protocol has no \c
@@ -153,6 +224,7 @@ main :-
     ),
     on_signal(term, _, shutdown_signal),
     on_signal(int, _, shutdown_signal),
+    on_signal(hup, _, reopen_signal),
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
     (   oro_server_kb_port(Server, KbPort)
@@ -161,9 +233,50 @@ main :-
     ),
     flush_output,
     load_sparql_engine,
-    thread_get_message(oro_server_stop),
+    serve_until_stopped,
     oro_server_shutdown(Server),
+    oro_log_close,
     halt(0).
+
+%   command_line_defaults(+Options0, -Options): the options of the
+%   command line, with the defaults of those not given taken from the
+%   settings (which --config may have set).
+
+command_line_defaults(Options0, Options) :-
+    setting(port, Port),
+    setting(host, Host),
+    setting(rebuild_garbage, Garbage),
+    setting(oro_knowledge:robot_id, RobotId),
+    setting(oro_knowledge:save_dir, SaveDir),
+    setting(oro_memory:time_base, TimeBase),
+    merge_options(Options0,
+                  [ port(Port), host(Host), rebuild_garbage(Garbage),
+                    robot_id(RobotId), save_dir(SaveDir),
+                    time_base(TimeBase)
+                  ],
+                  Options).
+
+start_log(Options) :-
+    (   option(log(File), Options)
+    ->  option(log_payload(Payload), Options, false),
+        oro_log_open(File, [payload(Payload)])
+    ;   true
+    ).
+
+%   serve_until_stopped: main waits for SIGTERM or SIGINT
+%   (shutdown_signal/1), reopening the log on each SIGHUP meanwhile.
+
+serve_until_stopped :-
+    thread_get_message(Message),
+    (   Message == oro_server_reopen_log
+    ->  oro_log_reopen,
+        debug(oro(server), 'Log reopened', []),
+        serve_until_stopped
+    ;   true
+    ).
+
+reopen_signal(_Signal) :-
+    thread_send_message(main, oro_server_reopen_log).
 
 %   load_sparql_engine: main, idle once the server listens, loads the
 %   SPARQL engine (see oro_sparql), so that the first query rarely
@@ -181,7 +294,7 @@ load_sparql_engine :-
 %   runs it.  With SWI-Prolog 9.0.4 a thread that has been created but
 %   has not run yet drops it.  A supervisor that stops the server right
 %   after it said it listens hit that window: on one core, 4 stops in
-%   60 were lost (a scratch loop; bench/RESULTS.md).  So main announces
+%   60 were lost (a scratch loop; git log of bench/RESULTS.md).  So main announces
 %   that it listens only once every other thread has run a goal it sent
 %   it (threads_settled/0): after that, 0 in 90.  A connection is
 %   served by a worker made at start (see CONNECTION WORKERS), not by a
@@ -285,7 +398,8 @@ oro_server_kb_port(Server, Port) :-
 %   oro_store_rebuild/0; every request runs in oro_store_read/1),
 %   kb_port(Port) (serve the KB-API dialect too, see oro_kbapi: off
 %   unless given, so that servers started here never clash; 0 picks a
-%   free port).  Server is an opaque handle.
+%   free port), silent(Bool) (default true; false reports the ontology
+%   loads: see oro_init/1).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -305,8 +419,10 @@ oro_server_start(Options, Server) :-
     option(db(Db), Options, ''),
     option(rebuild_garbage(Garbage), Options, 1000000),
     must_be(nonneg, Garbage),
+    option(silent(Silent), Options, true),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
+               silent(Silent),
                commonsense(CommonSense),
                ontologies(Files),
                robot_id(RobotId),
@@ -356,6 +472,14 @@ oro_server_connections(Server, Count) :-
     ->  Count = Busy
     ;   Count = 0                           % stopped, and none left
     ).
+
+%   The connections being served, for the stats method.
+
+:- multifile
+    oro_methods:server_figure/2.
+
+oro_methods:server_figure(connections, Count) :-
+    aggregate_all(count, connection(_), Count).
 
 %!  oro_server_stop(+Server) is det.
 %
@@ -601,7 +725,7 @@ serve_job(Server, Serial, Client, Peer) :-
 
 %   release_stacks: a worker whose stacks grew past 4 MB (a large
 %   request) gives them back before it waits.  Trimming small ones
-%   would slow every connection for nothing (bench/RESULTS.md).
+%   would slow every connection for nothing (git log of bench/RESULTS.md).
 
 release_stacks :-
     statistics(global, Global),
@@ -688,7 +812,10 @@ serve_stream(Server, Serial, Pair, Peer) :-
         ( mutex_create(Mutex),
           with_mutex(oro_connections, assertz(connection(Mutex)))
         ),
-        ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
+        ( flag(oro_server_connection, Id0, Id0 + 1),
+          Id is Id0 + 1,
+          Context = _{started:Server.started, peer:Peer, in:In, out:Out,
+                      id:Id,
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
                       max_params:MaxParams},
@@ -812,7 +939,11 @@ answer(Context, Prepared, Out) :-
 
 answer(Mutex, Context, Prepared, Out) :-
     \+ closed_connection(Mutex),
+    get_time(Start),
     oro_store_read(oro_perform(Context, Prepared, Reply)),
+    get_time(End),
+    Seconds is End - Start,
+    oro_log_request(Context.id, Context.peer, Prepared, Seconds, Reply),
     write_reply(Reply, Out).
 
 write_reply(ok(Value), Out) :-

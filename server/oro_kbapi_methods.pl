@@ -22,7 +22,7 @@
                 oro_scratch_graph/1
               ]).
 :- use_module(oro_protocol).
-:- use_module(oro_errors).
+:- use_module('../prolog/oro/oro_errors').
 :- use_module(oro_methods_explain).
 :- use_module(oro_kbapi_events).
 

@@ -13,11 +13,13 @@
 :- use_module(library(error)).
 :- use_module(library(debug)).
 :- use_module(library(http/json)).
+:- use_module(library(aggregate)).
+:- use_module(library(readutil)).
 :- use_module('../prolog/oro').
 :- use_module('../prolog/oro/oro_parse').
 :- use_module('../prolog/oro/oro_names').
 :- use_module('../prolog/oro/oro_store').
-:- use_module(oro_errors).
+:- use_module('../prolog/oro/oro_errors').
 :- use_module(oro_protocol).
 
 /** <module> The ORO method table and dispatcher
@@ -177,7 +179,7 @@ statements_param(updateForAgent(string, set), 2).
 %   parse_ahead(+N, +Args0, -Args): the Nth argument, statements as
 %   text, replaced by their triples if they are all complete statements.
 %   (oro_statements/3 normalises such triples again, at a fifth of the
-%   cost of parsing them: bench/RESULTS.md.)
+%   cost of parsing them: git log of bench/RESULTS.md.)
 
 parse_ahead(N, Args0, Args) :-
     nth1(N, Args0, Statements, Rest),
@@ -322,6 +324,16 @@ m_help(multiline_string(Text)) :-
 
 m_hello(string("oro-server 0.8.2")).
 
+%   stats: ORO's keys (values are strings, as clients parse them), with
+%   real counts for nb_classes, nb_instances (of the robot's model) and
+%   nb_clients, and more figures: the triples of the store, of each
+%   model's layer (triples.Model.Layer) and of the ontology, the
+%   models, the event watchers, the server's memory.  The server adds
+%   its own figures through server_figure/2 (nb_clients).
+
+:- multifile
+    server_figure/2.                % -Key, -Value
+
 m_stats(Context, map(Pairs)) :-
     get_time(Now),
     Uptime is max(0, integer(Now - Context.started)),
@@ -330,14 +342,71 @@ m_stats(Context, map(Pairs)) :-
     S is Uptime mod 60,
     format(string(UptimeText), "~|~`0t~d~2+:~|~`0t~d~2+:~|~`0t~d~2+", [H, M, S]),
     gethostname(Host),
-    Pairs = [ "version"-string("0.8.2"),
-              "host"-string(Host),
-              "uptime"-string(UptimeText),
-              "nb_classes"-string("not available"),
-              "nb_instances"-string("not available"),
-              "nb_clients"-string("not available"),
-              "pending_requests"-string("0")
-            ].
+    aggregate_all(count, oro_class(myself, _), Classes),
+    aggregate_all(count, oro_individual(myself, _), Instances),
+    (   server_figure(connections, Clients)
+    ->  true
+    ;   Clients = "not available"
+    ),
+    store_figures(Figures),
+    Pairs0 = [ "version"-"0.8.2",
+               "host"-Host,
+               "uptime"-UptimeText,
+               "nb_classes"-Classes,
+               "nb_instances"-Instances,
+               "nb_clients"-Clients,
+               "pending_requests"-"0"
+             | Figures
+             ],
+    maplist(string_figure, Pairs0, Pairs).
+
+string_figure(Key-Value, Key-string(Text)) :-
+    format(string(Text), "~w", [Value]).
+
+store_figures(Figures) :-
+    rdf_statistics(triples(Triples)),
+    oro_store_sizes(Sizes),
+    findall(Key-N,
+            ( member(size(Model, Layer, N), Sizes),
+              Model \== ontology,
+              layer_key(Layer, LayerName),
+              format(string(Key), "triples.~w.~w", [Model, LayerName])
+            ),
+            LayerFigures),
+    aggregate_all(sum(N), member(size(ontology, _, N), Sizes), Ontology),
+    aggregate_all(count, oro_model(_), Models),
+    aggregate_all(sum(N),
+                  ( oro_model(Model),
+                    oro_watchers(Model, Watchers),
+                    length(Watchers, N)
+                  ),
+                  NWatchers),
+    memory_bytes(Memory),
+    append([ "triples"-Triples,
+             "triples.ontology"-Ontology,
+             "models"-Models,
+             "watchers"-NWatchers,
+             "memory_bytes"-Memory
+           ],
+           LayerFigures, Figures).
+
+layer_key(profile(Profile), Profile) :- !.
+layer_key(Layer, Layer).
+
+%   memory_bytes(-Bytes): the resident memory of the process (Linux's
+%   /proc/self/status), or what Prolog allocated elsewhere.
+
+memory_bytes(Bytes) :-
+    (   catch(read_file_to_string('/proc/self/status', Status, []), _, fail),
+        sub_string(Status, B, _, _, "VmRSS:"),
+        sub_string(Status, B, _, 0, Rest),
+        split_string(Rest, "\n", "", [Line|_]),
+        split_string(Line, " \t", " \t", Parts),
+        member(Text, Parts),
+        number_string(KB, Text)
+    ->  Bytes is KB * 1024
+    ;   statistics(memory, [Bytes|_])
+    ).
 
 m_list_methods(map(Pairs)) :-
     findall(Text-string(Help),

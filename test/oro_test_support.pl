@@ -37,6 +37,7 @@
             test_set_call/3,            % +Method, +Params, -Set
             test_map/2,                 % +Reply, -Pairs
             test_cli_server/4,          % +Args, -Port, :Goal, -Stderr
+            test_server_process/5,      % +SwiplArgs, +Dir, -Port, :Goal, -Stderr
             test_log_request/2,         % +Line, -Request
             test_diff/4,                % +Expected, +Actual, +Max, -Diff
             test_first/3,               % +N, +List, -First
@@ -99,7 +100,8 @@ user:file_search_path(library, Lib) :-
     test_reclaimed(0, -),
     test_wait_until(0, +),
     test_connected(-, 0),
-    test_cli_server(+, -, 0, -).
+    test_cli_server(+, -, 0, -),
+    test_server_process(+, +, -, 0, -).
 
 
                  /*******************************
@@ -578,8 +580,9 @@ test_map(Reply, Pairs) :-
 
 %!  test_cli_server(+Args, -Port, :Goal, -Stderr) is det.
 %
-%   Run the real command line, `swipl server/oro_server.pl --port=0
-%   Args`, as a child process in the checkout (killed after 60 s at
+%   Run the real command line, `swipl server/oro_server.pl Args
+%   --port=0` (Args first, as swipl could take them for files to
+%   load), as a child process in the checkout (killed after 60 s at
 %   most), wait for its listening line, run Goal once, stop the
 %   server.  Port is the port it listens on, or `none` (and Goal is not
 %   run) if it printed no listening line; Stderr is what it printed on
@@ -588,10 +591,20 @@ test_map(Reply, Pairs) :-
 test_cli_server(Args, Port, Goal, Stderr) :-
     test_checkout_path('server/oro_server.pl', Server),
     test_checkout_path('.', Checkout),
+    append(Args, ['--port=0'], AllArgs),
+    test_server_process([Server|AllArgs], Checkout, Port, Goal, Stderr).
+
+%!  test_server_process(+SwiplArgs, +Dir, -Port, :Goal, -Stderr) is det.
+%
+%   As test_cli_server/4, for any server command: run `swipl
+%   SwiplArgs` in the directory Dir (killed after 60 s at most), wait
+%   for its listening line, run Goal once with Port, stop the server.
+
+test_server_process(SwiplArgs, Dir, Port, Goal, Stderr) :-
     setup_call_cleanup(
-        process_create(path(timeout), ['60', swipl, Server, '--port=0'|Args],
+        process_create(path(timeout), ['60', swipl|SwiplArgs],
                        [ stdout(pipe(Out)), stderr(pipe(Err)),
-                         cwd(Checkout), process(Pid)
+                         cwd(Dir), process(Pid)
                        ]),
         ( read_line_to_string(Out, Line),
           (   split_string(Line, ":", " ", Parts),

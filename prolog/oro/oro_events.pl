@@ -1247,7 +1247,7 @@ cold_model(Model) :-
 %   What the dropped watchers cost before (a scratch script, and
 %   bench_full's adds with two requests in flight, which it measures
 %   after registering and clearing 2,000 watchers) is in
-%   bench/RESULTS.md, "Dropped watchers left work behind".
+%   the history of bench/RESULTS.md (git log), "Dropped watchers left work behind".
 
 watching :-
     flag(oro_events_watchers, N, N),

@@ -66,7 +66,8 @@ anything changes.
                        time_base(positive_integer),
                        robot_id(atom),
                        save_dir(atom),
-                       db(atom)
+                       db(atom),
+                       silent(boolean)
                      ]).
 
 %!  oro_init(+Options) is det.
@@ -83,7 +84,9 @@ anything changes.
 %     - save_dir(+Dir): where oro_save/2 may write (default `.`);
 %     - db(+Dir): journal the models in Dir and restore what it holds
 %       (see oro_persist): every change reported done survives a
-%       crash.  Without it (the default) nothing is kept on disk.
+%       crash.  Without it (the default) nothing is kept on disk;
+%     - silent(+Bool): if `false`, report the progress of each ontology
+%       load and its summary (see oro_load_ontology/2; default `true`).
 
 oro_init(Options) :-
     must_be(list, Options),
@@ -93,6 +96,8 @@ oro_init(Options) :-
     option(save_dir(SaveDir), Options, '.'),
     option(time_base(TimeBase), Options, 1000),
     option(db(Db), Options, ''),
+    option(silent(Silent), Options, true),
+    must_be(boolean, Silent),
     must_be(positive_integer, TimeBase),
     must_be(atom, Db),
     must_be(boolean, CommonSense),
@@ -112,10 +117,11 @@ oro_init(Options) :-
     (   CommonSense == true
     ->  absolute_file_name(oro_ontologies('commonsense.ttl'), CS,
                            [access(read)]),
-        oro_load_ontology(CS)
+        oro_load_ontology(CS, [silent(Silent)])
     ;   true
     ),
-    maplist(oro_load_ontology, Files),
+    forall(member(File, Files),
+           oro_load_ontology(File, [silent(Silent)])),
     (   Db == ''
     ->  true
     ;   oro_store_attach(Db)

@@ -10,10 +10,14 @@
             oro_term_local_text/2,      % +Term, -Text
             oro_term_light_text/2,      % +Term, -Text
             oro_resource/2,             % ?Term, -IRI
-            oro_object/2                % ?Term, -Object
+            oro_object/2,               % ?Term, -Object
+            oro_rdf11/2,                % +Term, -Rdf11Term
+            op(110, xfx, @),
+            op(650, xfx, ^^)
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
+:- use_module(library(semweb/rdf11), [rdf_lexical_form/2, rdf_canonical_literal/2]).
 
 /** <module> Names: prefixes, expansion and contraction of ids
 
@@ -359,9 +363,11 @@ oro_resource(Term, _) :-
 %!  oro_object(?Term, -Object) is det.
 %
 %   Normalise the object of a statement given by a Prolog programmer:
-%   an rdf_db literal term, a number (xsd:int for an integer, else
-%   xsd:double), a string (xsd:string), or a resource as for
-%   oro_resource/2.  In a literal term, the datatype is named as a
+%   an rdf_db literal term, an rdf11 literal term (Value^^Type, Value
+%   a lexical form as a string or atom, or a Prolog value: a number,
+%   `true`, `false`, date(Y,M,D)...; Text@Lang), a number (xsd:int for
+%   an integer, else xsd:double), a string (xsd:string), or a resource
+%   as for oro_resource/2.  In a literal term, the datatype is named as a
 %   resource (`xsd:integer` at run time too) and the lexical form and
 %   language tag may be strings; a number as lexical form stands for
 %   its text.  A literal term is ground: literals match by value.
@@ -381,6 +387,17 @@ oro_object(literal(Value0), Object) :-
     ->  Object = literal(Value)
     ;   type_error(oro_literal, literal(Value0))
     ).
+oro_object(Value^^Type0, literal(type(Type, Lex))) :-
+    !,
+    must_be(ground, Value^^Type0),
+    oro_resource(Type0, Type),
+    rdf11_lexical(Value, Type, Lex).
+oro_object(Text@Lang0, literal(lang(Lang, Lex))) :-
+    !,
+    must_be(ground, Text@Lang0),
+    must_be(text, Lang0),
+    atom_string(Lang, Lang0),
+    literal_lexical(Text, Lex).
 oro_object(N, literal(type(Type, Lex))) :-
     number(N),
     !,
@@ -401,6 +418,69 @@ oro_object(S, literal(type(Type, Lex))) :-
     atom_string(Lex, S).
 oro_object(Term, IRI) :-
     oro_resource(Term, IRI).
+
+%   rdf11_lexical(+Value, +Type, -Lex): the lexical form of the rdf11
+%   literal Value^^Type.  Numbers are written as oro_object/2 writes
+%   them; other Prolog values (booleans, dates...) as rdf11 does.
+
+rdf11_lexical(Value, _, Lex) :-
+    (   string(Value)
+    ;   atom(Value),
+        \+ memberchk(Value, [true, false])
+    ),
+    !,
+    atom_string(Lex, Value).
+rdf11_lexical(Value, _, Lex) :-
+    integer(Value),
+    !,
+    atom_number(Lex, Value).
+rdf11_lexical(Value, _, Lex) :-
+    number(Value),
+    !,
+    F is float(Value),
+    double_lexical(F, Lex).
+rdf11_lexical(Value, Type, Lex) :-
+    (   catch(rdf_lexical_form(Value^^Type, Text^^_), _, fail)
+    ->  atom_string(Lex, Text)
+    ;   type_error(oro_literal, Value^^Type)
+    ).
+
+%!  oro_rdf11(+Term, -Rdf11Term) is det.
+%
+%   Rdf11Term is Term with every rdf_db literal in it written as
+%   library(semweb/rdf11) writes literals: Value^^Type with Value a
+%   Prolog value where rdf11 has one (numbers, booleans, dates),
+%   String^^Type otherwise, String@Lang, and String^^xsd:string for
+%   a plain literal.  Lists, rdf(S,P,O) triples and any other
+%   compound are converted argument by argument; IRIs are left alone.
+%   The answers of oro_find/4, oro_holds/4... are rdf_db terms: this
+%   gives them to code written for rdf11.
+
+oro_rdf11(Term, Rdf11) :-
+    (   var(Term)
+    ->  Rdf11 = Term
+    ;   Term = literal(Value)
+    ->  rdf11_literal(Value, Rdf11)
+    ;   compound(Term)
+    ->  compound_name_arguments(Term, Name, Args0),
+        maplist(oro_rdf11, Args0, Args),
+        compound_name_arguments(Rdf11, Name, Args)
+    ;   Rdf11 = Term
+    ).
+
+rdf11_literal(type(Type, Lex), Rdf11) :-
+    !,
+    atom_string(Lex, Text),
+    (   catch(rdf_canonical_literal(Text^^Type, Canonical), _, fail)
+    ->  Rdf11 = Canonical
+    ;   Rdf11 = Text^^Type
+    ).
+rdf11_literal(lang(Lang, Lex), Text@Lang) :-
+    !,
+    atom_string(Lex, Text).
+rdf11_literal(Lex, Text^^Type) :-
+    atom_string(Lex, Text),
+    rdf_equal(xsd:string, Type).
 
 %   literal_value(+Value0, -Value): the value of an rdf_db literal term
 %   with atoms where rdf_db wants them and the datatype an IRI; fails

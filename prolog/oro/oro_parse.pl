@@ -1642,7 +1642,9 @@ statement_triple(Statement, rdf(S, P, O), B0, B) :-
 
 term_literal_check(Term, Object) :-
     (   nonvar(Term),
-        Term = literal(_),
+        (   Term = literal(_)
+        ;   Term = _^^_
+        ),
         Object = literal(type(Type, Lex))
     ->  lexical_verdict(Type, Lex, Verdict),
         (   Verdict == ok

@@ -67,16 +67,11 @@ oro_with_time_limit(Goal) :-
               throw(error(resource_error(oro_query_time_limit(Limit)), _)))
     ).
 
-:- multifile prolog:error_message//1.
-
-prolog:error_message(resource_error(oro_query_time_limit(Seconds))) -->
-    [ 'The query was stopped after its time limit (~w s)'-[Seconds] ].
-
 %!  oro_solve(+Model, +Patterns) is nondet.
 %
 %   Bind the variables of Patterns (a list of rdf(S,P,O)) so that every
 %   pattern holds in Model.  Solutions may repeat when several
-%   derivations exist; use oro_find_values/4 for distinct answers.
+%   derivations exist; use oro_find/4 for distinct answers.
 %
 %   @error existence_error(agent, Model) for an unknown model.
 %   @error type_error(oro_pattern, Pattern) for a pattern that is not

@@ -20,7 +20,9 @@
             oro_schema_triple/2,        % +P, +O
             oro_schema_class/1,         % ?Class
             oro_load_ontology/1,        % +File
+            oro_load_ontology/2,        % +File, +Options
             oro_ontology_graph/1,       % ?Graph
+            oro_store_sizes/1,          % -Sizes
             oro_wipe_models/0,
             oro_store_reset/0,
             oro_store_attach/1,         % +Directory
@@ -41,7 +43,11 @@
 :- use_module(library(apply)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
+:- use_module(library(option)).
+:- use_module(library(aggregate)).
+:- use_module(library(uri), [uri_file_name/2]).
 :- use_module(oro_persist).
+:- use_module(oro_messages).
 :- use_module(oro_names, [oro_local_name/2]).
 
 :- meta_predicate
@@ -104,8 +110,8 @@ collector.  Once a program has erased clauses it held references to
 SWI-Prolog 9.0.4 also runs atom GC, which scans every atom, with each
 run of that collector.  With three or four clauses retracted a write,
 a server adding one statement at a time ran both collectors every 12
-writes; they took 12 to 37 us of CPU a write (bench/bench_writes.pl,
-bench/RESULTS.md).
+writes; they took 12 to 37 us of CPU a write (measured with a
+benchmark since retired, bench/bench_writes.pl: see git log).
 */
 
 :- dynamic
@@ -212,9 +218,37 @@ oro_graph_layer(Graph, Model, Layer) :-
 oro_ontology_graph(Graph) :-
     ontology_graph(Graph).
 
-%!  oro_model(?Model) is nondet.
+%!  oro_store_sizes(-Sizes) is det.
 %
-%   Model is an existing model (agent).
+%   Sizes lists the triples of each part of the store, as
+%   size(Model, Layer, Triples) for every model graph (Layer is
+%   profile(longterm), profile(shortterm), profile(episodic) or mask)
+%   and size(ontology, File, Triples) for every ontology file, in
+%   standard order.
+
+oro_store_sizes(Sizes) :-
+    findall(size(Part, Layer, Triples),
+            ( store_part(Graph, Part, Layer),
+              graph_size(Graph, Triples)
+            ),
+            Sizes0),
+    msort(Sizes0, Sizes).
+
+store_part(Graph, Model, Layer) :-
+    model_graph(Graph, Model, Layer).
+store_part(Graph, ontology, File) :-
+    ontology_graph(Graph),
+    (   rdf_graph_property(Graph, source(Source)),
+        uri_file_name(Source, File0)
+    ->  File = File0
+    ;   File = Graph
+    ).
+
+graph_size(Graph, Triples) :-
+    (   rdf_graph_property(Graph, triples(Triples0))
+    ->  Triples = Triples0
+    ;   Triples = 0
+    ).
 
 oro_model(Model) :-
     model_graph(_, Model, profile(longterm)).
@@ -364,7 +398,7 @@ oro_store_write(Action, Goal) :-
 %   `oro_write` mutex.  (The goals given to with_mutex/2 and
 %   setup_call_cleanup/3 here and in store_write/2 are named
 %   predicates: a meta-called conjunction or if-then-else is compiled
-%   to a temporary clause on every call; bench/RESULTS.md, "A request's
+%   to a temporary clause on every call; the history of bench/RESULTS.md, "A request's
 %   fixed cost".)
 
 locked_write(Action, Goal) :-
@@ -632,24 +666,101 @@ oro_schema_class(owl:'IrreflexiveProperty').
 oro_schema_class(owl:'Restriction').
 
 %!  oro_load_ontology(+File) is det.
+%!  oro_load_ontology(+File, +Options) is det.
 %
 %   Load File (RDF/XML `.owl`/`.rdf`, Turtle `.ttl`, N-Triples `.nt`)
-%   into a graph of its own in the ontology layer.
+%   into a graph of its own in the ontology layer.  Options:
+%
+%     - silent(+Bool): if `false`, print the triples loaded so far
+%       every `load_progress_interval` seconds while loading (on a
+%       terminal, see the setting `load_progress`), and a one-line
+%       summary once loaded (message oro(ontology_loaded(File, Triples,
+%       Seconds))).  Default `true`: nothing is printed.
 
 oro_load_ontology(File) :-
+    oro_load_ontology(File, []).
+
+oro_load_ontology(File, Options) :-
     must_be(atom, File),
+    must_be(list, Options),
+    option(silent(Silent), Options, true),
+    must_be(boolean, Silent),
     absolute_file_name(File, Path, [access(read)]),
     file_format(Path, Format),
+    get_time(Start),
     with_mutex(oro_write,
-               ( aggregate_all(count, ontology_graph(_), N0),
-                 N is N0 + 1,
-                 oro_shared_graph(ontology(N), Graph),
-                 oro_persist_exclude(Graph),
-                 rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
-                 assertz(ontology_graph(Graph)),
-                 index_graph_names(Graph),
-                 schema_changed
-               )).
+               load_reported(Path, Silent,
+                             load_ontology(Path, Format, Graph))),
+    (   Silent == true
+    ->  true
+    ;   rdf_graph_property(Graph, triples(Triples)),
+        get_time(End),
+        Seconds is End - Start,
+        print_message(informational,
+                      oro(ontology_loaded(Path, Triples, Seconds)))
+    ).
+
+load_ontology(Path, Format, Graph) :-
+    aggregate_all(count, ontology_graph(_), N0),
+    N is N0 + 1,
+    oro_shared_graph(ontology(N), Graph),
+    oro_persist_exclude(Graph),
+    rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
+    assertz(ontology_graph(Graph)),
+    index_graph_names(Graph),
+    schema_changed.
+
+:- setting(load_progress, oneof([tty, true, false]), tty,
+           'When a load that is not silent reports its progress: when \c
+           stderr is a terminal (tty), always (true) or never (false)').
+:- setting(load_progress_interval, number, 1,
+           'Seconds between two progress reports of an ontology load').
+
+%   load_reported(+Path, +Silent, :Load): run Load; unless Silent, a
+%   thread reports the triples loaded so far every
+%   load_progress_interval seconds meanwhile (then indexing the names
+%   of the graph: the count no longer grows, the seconds do).  rdf_statistics/1 counts
+%   the triples of the load's transaction before it commits, and
+%   oro_write is held: the difference is what the load has added.
+
+load_reported(Path, Silent, Load) :-
+    (   Silent == false,
+        load_progress
+    ->  rdf_statistics(triples(Triples0)),
+        get_time(Start),
+        setting(load_progress_interval, Interval),
+        message_queue_create(Queue),
+        setup_call_cleanup(
+            thread_create(report_progress(Queue, Interval,
+                                          progress(Path, Triples0, Start)),
+                          Reporter, []),
+            Load,
+            ( thread_send_message(Queue, done),
+              thread_join(Reporter, _),
+              message_queue_destroy(Queue)
+            ))
+    ;   call(Load)
+    ).
+
+load_progress :-
+    setting(load_progress, When),
+    (   When == tty
+    ->  stream_property(user_error, tty(true))
+    ;   When == true
+    ).
+
+report_progress(Queue, Interval, Progress) :-
+    (   thread_get_message(Queue, done, [timeout(Interval)])
+    ->  true
+    ;   Progress = progress(Path, Triples0, Start),
+        rdf_statistics(triples(Triples1)),
+        get_time(Now),
+        Triples is max(0, Triples1 - Triples0),
+        Seconds is Now - Start,
+        print_message(informational,
+                      oro(ontology_loading(Path, Triples, Seconds))),
+        report_progress(Queue, Interval, Progress)
+    ).
 
 file_format(Path, Format) :-
     file_name_extension(_, Ext0, Path),

@@ -2,7 +2,7 @@
           [ oro_error_response/3        % +Error, -ExceptionName, -Message
           ]).
 :- use_module(library(semweb/rdf_db)).
-:- use_module('../prolog/oro/oro_names').
+:- use_module(oro_names).
 
 /** <module> ORO exception names and messages
 
@@ -11,6 +11,13 @@ error(Formal, Context) terms) to the exception class names and
 messages ORO clients expect (ORO-SPEC §1.3, §6).  liboro looks for
 `com.hp.hpl.jena.shared.NotFoundException` and
 `com.hp.hpl.jena.query.QueryParseException` by substring: keep them.
+
+The same sentences are oro's translations for print_message/2
+(prolog:error_message//1), so the toplevel and a planner's log print
+`Three tokens are expected in a statement, 1 found in foo.` rather
+than the raw term; the errors of oro's Prolog API that the server
+never sends as such (bad terms given to the API) have their sentences
+in api_error/3.
 */
 
 %!  oro_error_response(+Error, -ExceptionName, -Message) is det.
@@ -18,6 +25,74 @@ messages ORO clients expect (ORO-SPEC §1.3, §6).  liboro looks for
 %   ExceptionName and Message (strings, one line) for the exception
 %   term Error.  Unknown errors become an OntologyServerException with
 %   the text print_message/2 would show.
+
+                 /*******************************
+                 *           MESSAGES           *
+                 *******************************/
+
+:- multifile
+    prolog:error_message//1.
+
+prolog:error_message(Formal) -->
+    { oro_formal(Formal),
+      formal_text(Formal, Format, Args)
+    },
+    [ Format-Args ].
+
+%   oro_formal(+Formal): Formal is an error term of oro's, not one of
+%   SWI-Prolog's that the table also names (those keep their message),
+%   nor one whose module has its own translation (own_message/1).
+
+oro_formal(Formal) :-
+    nonvar(Formal),
+    \+ own_message(Formal).
+
+own_message(existence_error(source_sink, _)).
+own_message(resource_error(Resource)) :-
+    Resource \= oro_query_time_limit(_).
+own_message(domain_error(uuid, _)).
+own_message(syntax_error(oro_sparql(_, _))).    % oro_sparql_engine
+
+formal_text(Formal, Format, Args) :-
+    (   error_table(Formal, _, Format, Args)
+    ->  true
+    ;   api_error(Formal, Format, Args)
+    ).
+
+%   api_error(+Formal, -Format, -Args): the errors of terms given to
+%   the Prolog API.
+
+api_error(type_error(oro_pattern, Term),
+          'Not a pattern: ~q (text, or rdf(S, P, O) with variables \c
+           where anything matches).', [Term]).
+api_error(type_error(oro_triple, Term),
+          'Not a triple: ~q (rdf(S, P, O) expected).', [Term]).
+api_error(type_error(oro_resource, Term),
+          'Not a resource: ~q (a name such as fork1, Prefix:Local or a \c
+           full IRI expected).', [Term]).
+api_error(type_error(oro_literal, Term),
+          'Not a literal: ~q (literal(Lex), literal(type(Type, Lex)), \c
+           literal(lang(Lang, Lex)), Value^^Type or Text@Lang expected).',
+          [Term]).
+api_error(type_error(oro_collection, Text),
+          'Not a set or list: ~w (it must be framed by [ ]).', [Text]).
+api_error(type_error(oro_map, Text),
+          'Not a map: ~w (it must be framed by { } and its entries \c
+           written key: value).', [Text]).
+api_error(type_error(oro_value, Term),
+          'Cannot be sent to a client as a value: ~q.', [Term]).
+api_error(type_error(oro_subscriber, Term),
+          'Not an event subscriber: ~q (see oro_subscriber_create/3).',
+          [Term]).
+api_error(existence_error(oro_subscriber, Subscriber),
+          'The event subscriber ~q no longer exists.', [Subscriber]).
+api_error(domain_error(oro_delimiter, Delimiter),
+          'A delimiter is one character, not ~q.', [Delimiter]).
+api_error(domain_error(oro_comparable, Term),
+          'Cannot compare these resources: ~q.', [Term]).
+api_error(permission_error(rebuild, oro_store, inside_reader),
+          'The store cannot be rebuilt from inside oro_store_read/1.', []).
+api_error(oro_method(Reason), 'The method failed (~q).', [Reason]).
 
 oro_error_response(error(Formal, _), Name, Message) :-
     error_table(Formal, Name0, Format, Args),
