@@ -20,6 +20,7 @@
 :- use_module(oro_methods_categorization).
 :- use_module(oro_methods_explain).
 :- use_module(oro_plugins).
+:- use_module('../prolog/oro/oro_save', [oro_save_cancel/0]).
 
 /** <module> The ORO socket server
 
@@ -54,7 +55,8 @@ nothing.
 :- dynamic
     connection/1,                   % Mutex of a live connection
     closed_connection/1,            % Mutex of one the shutdown closed
-    workers/3.                      % Jobs, Busy, Idle: see CONNECTION WORKERS
+    workers/3,                      % Jobs, Busy, Idle: see CONNECTION WORKERS
+    from_address/3.                 % Jobs, Host, Count: see CONNECTION WORKERS
 
 :- setting(max_connections, positive_integer, 256,
            'Maximum number of simultaneous client connections').
@@ -66,8 +68,12 @@ nothing.
            'Maximum number of parameters of one request').
 :- setting(shutdown_grace, number, 10,
            'Seconds a shutdown waits for the request in progress of a connection').
-:- setting(idle_timeout, number, 0,
-           'Seconds a connection may stay silent before it is closed (0: never)').
+:- setting(max_per_address, nonneg, 64,
+           'Maximum number of simultaneous connections from one client \c
+            address (0: no limit)').
+:- setting(idle_timeout, number, 30,
+           'Seconds a connection with no event watcher may wait without \c
+            sending a request before it is closed (0: never)').
 :- setting(write_timeout, number, 60,
            'Seconds a reply may wait for a client that does not read, before \c
            the client is disconnected').
@@ -85,6 +91,9 @@ opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
+opt_type(idle_timeout, idle_timeout, number).
+opt_type(max_connections, max_connections, positive_integer).
+opt_type(max_per_address, max_per_address, nonneg).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -98,7 +107,10 @@ Options:
   --no-commonsense   Do not load the bundled common-sense ontology
   --robot-id=ID      Id of the robot: a synonym of myself
   --time-base=MS     Length of one memory time unit in ms (default 1000)
-  --save-dir=DIR     Directory where save may write files (default .)
+  --save-dir=DIR     Directory where save may write files (default
+                     $XDG_DATA_HOME/oro/saves or ~/.local/share/oro/saves,
+                     made on the first save); never the --db directory
+                     nor the server's installation
   --plugin=FILE      Load a Prolog plugin declaring extra methods; repeatable
   --db=DIR           Journal the models in DIR (created if needed) and
                      restore them from it on start: nothing acknowledged
@@ -108,6 +120,13 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
+  --idle-timeout=S   Close a connection that holds no event watcher and
+                     sent no request for S seconds (default 30; 0: never)
+  --max-connections=N
+                     Serve at most N connections at once (default 256)
+  --max-per-address=N
+                     Serve at most N connections from one client address
+                     (default 64; 0: no limit)
   -h, --help         Show this help
 ").
 
@@ -247,8 +266,9 @@ loopback(Host) :-
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
-%   oro_store_rebuild/0; every request runs in oro_store_read/1).
-%   Server is an opaque handle.
+%   oro_store_rebuild/0; every request runs in oro_store_read/1),
+%   idle_timeout(S), max_connections(N) and max_per_address(N) (set
+%   the settings of the same names).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -263,11 +283,16 @@ oro_server_start(Options, Server) :-
     option(host(Host), Options, '127.0.0.1'),
     option(commonsense(CommonSense), Options, true),
     option(robot_id(RobotId), Options, ''),
-    option(save_dir(SaveDir), Options, '.'),
+    option(save_dir(SaveDir), Options, ''),
     option(time_base(TimeBase), Options, 1000),
     option(db(Db), Options, ''),
     option(rebuild_garbage(Garbage), Options, 1000000),
     must_be(nonneg, Garbage),
+    forall(( member(Name, [idle_timeout, max_connections, max_per_address]),
+             Option =.. [Name, Value],
+             option(Option, Options)
+           ),
+           set_setting(Name, Value)),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                commonsense(CommonSense),
@@ -342,6 +367,7 @@ oro_server_stop(Server) :-
 
 oro_server_shutdown(Server) :-
     oro_server_stop(Server),
+    oro_save_cancel,                        % a save can take minutes
     setting(shutdown_grace, Grace),
     findall(Mutex, connection(Mutex), Mutexes),
     include(lock_connection(Grace), Mutexes, Locked),
@@ -401,13 +427,19 @@ accept_connections(Server) :-
     ).
 
 %   refuse_connection(+Client, +Peer, +Why): tell the client why it
-%   is not served (all workers busy, or no thread for it), and close it.
+%   is not served (all workers busy, too many connections from its
+%   address, or no thread for it), and close it.
 
 refuse_connection(Client, Peer, Why) :-
     (   Why = full(Max)
     ->  print_message(warning,
                       format("oro: connection from ~p refused: ~D connections \c
                               open already (max_connections)", [Peer, Max]))
+    ;   Why = address(PerMax)
+    ->  print_message(warning,
+                      format("oro: connection from ~p refused: ~D connections \c
+                              from that address already (max_per_address)",
+                             [Peer, PerMax]))
     ;   print_message(warning, Why)
     ),
     catch(setup_call_cleanup(
@@ -455,18 +487,75 @@ start_workers(Server) :-
 start_connection(Server, Client, Peer) :-
     setting(max_connections, Max),
     Jobs = Server.jobs,
-    with_mutex(oro_server_workers, reserve_worker(Jobs, Max, How)),
+    peer_host(Peer, Host),
+    with_mutex(oro_server_workers, reserve_connection(Jobs, Max, Host, How)),
     (   How == waiting
     ->  thread_send_message(Jobs, serve(Client, Peer))
     ;   How == new
     ->  catch(thread_create(connection_worker(Server, 1, Client, Peer), _,
                             [detached(true)]),
               Error,
-              ( with_mutex(oro_server_workers, unreserve_worker(Jobs)),
+              ( with_mutex(oro_server_workers,
+                           ( unreserve_worker(Jobs),
+                             address_released(Jobs, Host)
+                           )),
                 refuse_connection(Client, Peer, Error)
               ))
-    ;   refuse_connection(Client, Peer, full(Max))
+    ;   refuse_connection(Client, Peer, How)
     ).
+
+%   reserve_connection(+Jobs, +Max, +Host, -How): as reserve_worker/3,
+%   but How is address(PerMax) when Host has `max_per_address`
+%   connections already.
+%
+%   from_address(Jobs, Host, Count): Count connections from Host are
+%   counted (from acceptance to release) by the workers of Jobs.  A
+%   per-address cap keeps one client from taking every connection: the
+%   others, from other addresses, are still served (idle connections
+%   are closed after idle_timeout, which serves the rest).
+
+reserve_connection(Jobs, Max, Host, How) :-
+    setting(max_per_address, PerMax),
+    (   PerMax > 0,
+        from_address(Jobs, Host, Count),
+        Count >= PerMax
+    ->  How = address(PerMax)
+    ;   reserve_worker(Jobs, Max, How0),
+        (   How0 == full
+        ->  How = full(Max)
+        ;   How = How0,
+            address_added(Jobs, Host)
+        )
+    ).
+
+address_added(Jobs, Host) :-
+    (   retract(from_address(Jobs, Host, Count0))
+    ->  Count is Count0 + 1
+    ;   Count = 1
+    ),
+    assertz(from_address(Jobs, Host, Count)).
+
+address_released(Jobs, Host) :-
+    (   retract(from_address(Jobs, Host, Count0)),
+        Count0 > 1
+    ->  Count is Count0 - 1,
+        assertz(from_address(Jobs, Host, Count))
+    ;   true
+    ).
+
+peer_host(Peer, Host) :-
+    (   Peer = Host0:_
+    ->  Host = Host0
+    ;   Host = Peer
+    ).
+
+%   release_connection(+Jobs, +Peer, -Wait): release_worker/2 for a
+%   connection from Peer.
+
+release_connection(Jobs, Peer, Wait) :-
+    peer_host(Peer, Host),
+    address_released(Jobs, Host),
+    release_worker(Jobs, Wait).
 
 %   reserve_worker(+Jobs, +Max, -How): count one more connection, for a
 %   worker that waits (How = waiting) or a new one (new), unless Max
@@ -538,7 +627,7 @@ connection_worker(Server, Serial, Client, Peer) :-
     catch(serve_job(Server, Serial, Client, Peer),
           oro_connection_end(_),            % a signal that came just after
           true),
-    with_mutex(oro_server_workers, release_worker(Server.jobs, Wait)),
+    with_mutex(oro_server_workers, release_connection(Server.jobs, Peer, Wait)),
     (   Wait == true
     ->  Next is Serial + 1,
         connection_worker(Server, Next)
@@ -594,9 +683,9 @@ end_serving(Serial, Why) :-
 stop_workers(Server) :-
     Jobs = Server.jobs,
     with_mutex(oro_server_workers, workers_stopped(Jobs)),
-    forall(thread_get_message(Jobs, serve(Client, _), [timeout(0)]),
+    forall(thread_get_message(Jobs, serve(Client, Peer), [timeout(0)]),
            ( catch(tcp_close_socket(Client), _, true),
-             with_mutex(oro_server_workers, release_worker(Jobs, _))
+             with_mutex(oro_server_workers, release_connection(Jobs, Peer, _))
            )),
     message_queue_destroy(Jobs).
 
@@ -658,8 +747,9 @@ serve_stream(Server, Serial, Pair, Peer) :-
           catch(mutex_destroy(Mutex), _, true)    % held by a shutdown
         )).
 
-%   A connection silent for longer than idle_timeout is told why it is
-%   closed; other errors (the peer left, a reply it would not read
+%   A connection silent for longer than idle_timeout (holding no event
+%   subscriber, see read_request/5) is told why it is closed; other
+%   errors (the peer left, a reply it would not read
 %   within write_timeout) just end it.
 
 connection_ended(Context, error(timeout_error(read, _), _)) :-
@@ -684,10 +774,38 @@ serve_requests(Context, Reader, Out) :-
                                stop_ahead(Ahead, Catcher)).
 
 serve_requests(Context, Reader0, Out, Ahead) :-
-    oro_read_request(Reader0, Request, Reader),
+    read_request(Context, Ahead, Reader0, Request, Reader),
     (   serve_request(Request, Context, Out, Reader, Ahead)
     ->  serve_requests(Context, Reader, Out, Ahead)
     ;   true
+    ).
+
+%   read_request(+Context, +Ahead, +Reader0, -Request, -Reader): the
+%   next request.  The input's timeout is idle_timeout: a connection
+%   that sends nothing for that long is closed (connection_ended/2),
+%   unless it holds an event subscriber (a client waiting for its
+%   events sends nothing) or the helper is still answering its
+%   requests: then the read starts again, if the one that timed out
+%   consumed no byte (byte_count/2), else the connection is closed as
+%   the request begun is lost.
+
+read_request(Context, Ahead, Reader0, Request, Reader) :-
+    In = Context.in,
+    byte_count(In, Before),
+    catch(oro_read_request(Reader0, Request0, Reader1), Error, true),
+    (   var(Error)
+    ->  Request = Request0,
+        Reader = Reader1
+    ;   Error = error(timeout_error(read, _), _),
+        (   arg(1, Context.subscribers, [_|_])
+        ->  true
+        ;   ahead_busy(Ahead)
+        ),
+        byte_count(In, Before)
+    ->  debug(oro(server), 'Connection ~q silent but subscribed: kept',
+              [Context.peer]),
+        read_request(Context, Ahead, Reader0, Request, Reader)
+    ;   throw(Error)
     ).
 
 %   serve_request(+Request, +Context, +Out, +Reader, +Ahead) is semidet:
