@@ -281,15 +281,8 @@ scan_chunks(Start, Length, Text, DS, Max, Prev0, State0, Cuts) :-
         sub_string(Text, Start, Take, _, Chunk),
         split_string(Chunk, "[]{}\"'\\", "", [First|Parts]),
         DS = _-Sep,
-        (   State0 == s(0, 0, 0, 0)
-        ->  segment_cuts(First, Sep, Start, Cuts, Cuts1)
-        ;   Cuts = Cuts1
-        ),
-        string_length(First, FirstLength),
-        (   FirstLength =:= 0
-        ->  Prev1 = Prev0
-        ;   Prev1 = -1
-        ),
+        segment(First, Sep, Start, State0, Prev0, Prev1, FirstLength,
+                Cuts, Cuts1),
         Pos is Start+FirstLength,
         scan_cuts(Parts, Text, Pos, DS, Max, Prev1-State0, Prev-State,
                   Cuts1, Cuts2),
@@ -323,17 +316,26 @@ scan_cuts([Part|Parts], Text, Pos, D-Sep, Max, Prev-State0, End,
     ->  Cuts = [Pos|Cuts1]
     ;   Cuts = Cuts1
     ),
-    (   State == s(0, 0, 0, 0)
-    ->  segment_cuts(Part, Sep, Index, Cuts1, Cuts2)
-    ;   Cuts2 = Cuts1
-    ),
-    string_length(Part, Length),
-    (   Length =:= 0
-    ->  Prev1 = C
-    ;   Prev1 = -1
-    ),
+    segment(Part, Sep, Index, State, C, Prev1, Length, Cuts1, Cuts2),
     Pos1 is Index+Length,
     scan_cuts(Parts, Text, Pos1, D-Sep, Max, Prev1-State, End, Cuts2, Tail).
+
+%   segment(+Segment, +Sep, +Start, +State, +Prev0, -Prev, -Length,
+%   -Cuts, ?Tail): the segment of plain text Segment, of Length, at
+%   offset Start, read in State: Cuts (ending in Tail) are its
+%   delimiters if State is zero; Prev is the character before what
+%   follows it (Prev0 if it is empty, else a plain one).
+
+segment(Segment, Sep, Start, State, Prev0, Prev, Length, Cuts, Tail) :-
+    (   State == s(0, 0, 0, 0)
+    ->  segment_cuts(Segment, Sep, Start, Cuts, Tail)
+    ;   Cuts = Tail
+    ),
+    string_length(Segment, Length),
+    (   Length =:= 0
+    ->  Prev = Prev0
+    ;   Prev = -1
+    ).
 
 %   segment_cuts(+Segment, +Sep, +Start, -Cuts, ?Tail): Cuts, ending in
 %   Tail, are the offsets in Text of the delimiters Sep in Segment, a
