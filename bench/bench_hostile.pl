@@ -26,6 +26,7 @@
 :- use_module(library(apply)).
 :- use_module(library(main), [argv_options/3]).
 :- use_module(bench_common).
+:- use_module('../server/oro_protocol').
 
 :- initialization(main, main).
 
@@ -43,7 +44,41 @@ main :-
             outcome]),
     Bytes is round(MB * 1048576),
     forall(construct(Name, Unit, Frame),
-           row(Name, Unit, Frame, Bytes)).
+           row(Name, Unit, Frame, Bytes)),
+    nl,
+    format("~w~t~34|~w~t~12+~w~t~10+~w~n",
+           ['request read (max_lines 5120)', bytes, 'CPU s/MB', outcome]),
+    forall(request_construct(Name, Unit, Frame),
+           read_row(Name, Unit, Frame, Bytes)).
+
+%   request_construct(?Name, ?Unit, ?Frame): a whole request, Unit
+%   repeated inside Frame, read by oro_protocol's reader with the
+%   server's max_lines (max_params 4096 + 1024).
+
+request_construct('empty lines',        "\n",  "add\n~sx\n#end#\n").
+request_construct('leading empty lines', "\n", "~sadd\nx\n#end#\n").
+request_construct('carriage returns',   "\r",  "add\n~sx\n#end#\n").
+request_construct('short lines',        "a\n", "add\n~s#end#\n").
+
+read_row(Name, Unit, Frame, Bytes) :-
+    repeated(Unit, Bytes, Repeated),
+    format(string(Request), Frame, [Repeated]),
+    string_length(Request, Length),
+    setup_call_cleanup(
+        open_string(Request, In),
+        ( oro_reader(In, Reader, [max_lines(5120)]),
+          statistics(cputime, T0),
+          oro_read_request(Reader, Read, _),
+          statistics(cputime, T1)
+        ),
+        close(In)),
+    (   Read = request(Method, _)
+    ->  Outcome = Method
+    ;   Outcome = Read
+    ),
+    MBs is Length / 1048576,
+    format("~w~t~34|~D~t~12+~3f~t~10+~q~n",
+           [Name, Length, (T1-T0)/MBs, Outcome]).
 
 %   construct(?Name, ?Unit, ?Frame): Unit repeated inside Frame
 %   (format/3 with one ~s).

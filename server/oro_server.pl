@@ -734,7 +734,10 @@ serve_stream(Server, Serial, Pair, Peer) :-
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
                       max_params:MaxParams},
-          catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
+          MaxLines is MaxParams + 1024,     % the method, #end#, blank lines
+          catch(( oro_reader(In, Reader, [ max_request_size(Limit),
+                                           max_lines(MaxLines)
+                                         ]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
                 connection_ended(Context, Error)),
@@ -848,6 +851,14 @@ handle_request(bad(too_large(Limit)), Context, Out) :-
     Drain is 4 * Limit,
     oro_drain_input(Context.in, Drain, 2),
     fail.
+handle_request(bad(too_many_lines(Max)), Context, Out) :-
+    !,
+    format(string(Message), "Too many parameters: the request has more \c
+           than ~D lines (at most ~D parameters).",
+           [Max, Context.max_params]),
+    with_mutex(Context.mutex,
+               oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                               Message)).
 handle_request(bad(encoding), Context, Out) :-
     !,
     with_mutex(Context.mutex,
