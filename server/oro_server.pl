@@ -72,8 +72,9 @@ nothing.
            'Maximum number of simultaneous connections from one client \c
             address (0: no limit)').
 :- setting(idle_timeout, number, 30,
-           'Seconds a connection with no event watcher may wait without \c
-            sending a request before it is closed (0: never)').
+           'Seconds a connection that never registered an event may \c
+            wait without sending a request before it is closed \c
+            (0: never)').
 :- setting(write_timeout, number, 60,
            'Seconds a reply may wait for a client that does not read, before \c
            the client is disconnected').
@@ -120,7 +121,7 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
-  --idle-timeout=S   Close a connection that holds no event watcher and
+  --idle-timeout=S   Close a connection that never registered an event and
                      sent no request for S seconds (default 30; 0: never)
   --max-connections=N
                      Serve at most N connections at once (default 256)
