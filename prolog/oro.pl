@@ -102,6 +102,7 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(oro/oro_names).
 :- use_module(oro/oro_knowledge).
+:- use_module(oro/oro_save, [oro_save/2]).
 :- use_module(oro/oro_parse).
 :- use_module(oro/oro_events).
 :- use_module(oro/oro_agents).

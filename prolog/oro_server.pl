@@ -28,6 +28,7 @@
 :- use_module('../server/oro_kbapi').
 :- use_module('../server/oro_log').
 :- use_module('../server/oro_cli').
+:- use_module(oro/oro_save, [oro_save_cancel/0]).
 
 /** <module> The ORO socket server
 
@@ -54,7 +55,8 @@ embedding); loading this library starts nothing.
 :- dynamic
     connection/1,                   % Mutex of a live connection
     closed_connection/1,            % Mutex of one the shutdown closed
-    workers/3.                      % Jobs, Busy, Idle: see CONNECTION WORKERS
+    workers/3,                      % Jobs, Busy, Idle: see CONNECTION WORKERS
+    from_address/3.                 % Jobs, Host, Count: see CONNECTION WORKERS
 
 :- setting(port, between(0, 65535), 6969,
            'TCP port the command line listens on (0: a free one)').
@@ -72,8 +74,13 @@ embedding); loading this library starts nothing.
            'Maximum number of parameters of one request').
 :- setting(shutdown_grace, number, 10,
            'Seconds a shutdown waits for the request in progress of a connection').
-:- setting(idle_timeout, number, 0,
-           'Seconds a connection may stay silent before it is closed (0: never)').
+:- setting(max_per_address, nonneg, 64,
+           'Maximum number of simultaneous connections from one client \c
+            address (0: no limit)').
+:- setting(idle_timeout, number, 30,
+           'Seconds a connection that never registered an event may \c
+            wait without sending a request before it is closed \c
+            (0: never)').
 :- setting(write_timeout, number, 60,
            'Seconds a reply may wait for a client that does not read, before \c
            the client is disconnected').
@@ -97,6 +104,9 @@ opt_type(config, config, file(read)).
 opt_type(log, log, atom).
 opt_type(log_payload, log_payload, boolean).
 opt_type(debug, debug, atom).
+opt_type(idle_timeout, idle_timeout, number).
+opt_type(max_connections, max_connections, positive_integer).
+opt_type(max_per_address, max_per_address, nonneg).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
    or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
@@ -111,7 +121,10 @@ Options:
   --no-commonsense   Do not load the bundled common-sense ontology
   --robot-id=ID      Id of the robot: a synonym of myself
   --time-base=MS     Length of one memory time unit in ms (default 1000)
-  --save-dir=DIR     Directory where save may write files (default .)
+  --save-dir=DIR     Directory where save may write files (default
+                     $XDG_DATA_HOME/oro/saves or ~/.local/share/oro/saves,
+                     made on the first save); never the --db directory
+                     nor the server's installation
   --plugin=FILE      Load a Prolog plugin declaring extra methods; repeatable
   --db=DIR           Journal the models in DIR (created if needed) and
                      restore them from it on start: nothing acknowledged
@@ -132,6 +145,13 @@ Options:
   --log-payload      Also log the parameters of each request
   --debug=TOPIC      Print the debug/3 messages of TOPIC, e.g. 'oro(server)';
                      repeatable
+  --idle-timeout=S   Close a connection that never registered an event and
+                     sent no request for S seconds (default 30; 0: never)
+  --max-connections=N
+                     Serve at most N connections at once (default 256)
+  --max-per-address=N
+                     Serve at most N connections from one client address
+                     (default 64; 0: no limit)
   -h, --help         Show this help
 
 Settings, each also an option (and a setting(Name, Value) of --config):
@@ -247,7 +267,7 @@ command_line_defaults(Options0, Options) :-
     setting(host, Host),
     setting(rebuild_garbage, Garbage),
     setting(oro_knowledge:robot_id, RobotId),
-    setting(oro_knowledge:save_dir, SaveDir),
+    setting(oro_save:save_dir, SaveDir),
     setting(oro_memory:time_base, TimeBase),
     merge_options(Options0,
                   [ port(Port), host(Host), rebuild_garbage(Garbage),
@@ -399,7 +419,9 @@ oro_server_kb_port(Server, Port) :-
 %   kb_port(Port) (serve the KB-API dialect too, see oro_kbapi: off
 %   unless given, so that servers started here never clash; 0 picks a
 %   free port), silent(Bool) (default true; false reports the ontology
-%   loads: see oro_init/1).  Server is an opaque handle.
+%   loads: see oro_init/1), idle_timeout(S), max_connections(N) and
+%   max_per_address(N) (set the settings of the same names).  Server is
+%   an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -414,12 +436,17 @@ oro_server_start(Options, Server) :-
     option(host(Host), Options, '127.0.0.1'),
     option(commonsense(CommonSense), Options, true),
     option(robot_id(RobotId), Options, ''),
-    option(save_dir(SaveDir), Options, '.'),
+    option(save_dir(SaveDir), Options, ''),
     option(time_base(TimeBase), Options, 1000),
     option(db(Db), Options, ''),
     option(rebuild_garbage(Garbage), Options, 1000000),
     must_be(nonneg, Garbage),
     option(silent(Silent), Options, true),
+    forall(( member(Name, [idle_timeout, max_connections, max_per_address]),
+             Option =.. [Name, Value],
+             option(Option, Options)
+           ),
+           set_setting(Name, Value)),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                silent(Silent),
@@ -513,6 +540,7 @@ oro_server_stop(Server) :-
 
 oro_server_shutdown(Server) :-
     oro_server_stop(Server),
+    oro_save_cancel,                        % a save can take minutes
     setting(shutdown_grace, Grace),
     findall(Mutex, connection(Mutex), Mutexes),
     include(lock_connection(Grace), Mutexes, Locked),
@@ -572,13 +600,19 @@ accept_connections(Server) :-
     ).
 
 %   refuse_connection(+Client, +Peer, +Why): tell the client why it
-%   is not served (all workers busy, or no thread for it), and close it.
+%   is not served (all workers busy, too many connections from its
+%   address, or no thread for it), and close it.
 
 refuse_connection(Client, Peer, Why) :-
     (   Why = full(Max)
     ->  print_message(warning,
                       format("oro: connection from ~p refused: ~D connections \c
                               open already (max_connections)", [Peer, Max]))
+    ;   Why = address(PerMax)
+    ->  print_message(warning,
+                      format("oro: connection from ~p refused: ~D connections \c
+                              from that address already (max_per_address)",
+                             [Peer, PerMax]))
     ;   print_message(warning, Why)
     ),
     catch(setup_call_cleanup(
@@ -626,18 +660,75 @@ start_workers(Server) :-
 start_connection(Server, Client, Peer) :-
     setting(max_connections, Max),
     Jobs = Server.jobs,
-    with_mutex(oro_server_workers, reserve_worker(Jobs, Max, How)),
+    peer_host(Peer, Host),
+    with_mutex(oro_server_workers, reserve_connection(Jobs, Max, Host, How)),
     (   How == waiting
     ->  thread_send_message(Jobs, serve(Client, Peer))
     ;   How == new
     ->  catch(thread_create(connection_worker(Server, 1, Client, Peer), _,
                             [detached(true)]),
               Error,
-              ( with_mutex(oro_server_workers, unreserve_worker(Jobs)),
+              ( with_mutex(oro_server_workers,
+                           ( unreserve_worker(Jobs),
+                             address_released(Jobs, Host)
+                           )),
                 refuse_connection(Client, Peer, Error)
               ))
-    ;   refuse_connection(Client, Peer, full(Max))
+    ;   refuse_connection(Client, Peer, How)
     ).
+
+%   reserve_connection(+Jobs, +Max, +Host, -How): as reserve_worker/3,
+%   but How is address(PerMax) when Host has `max_per_address`
+%   connections already.
+%
+%   from_address(Jobs, Host, Count): Count connections from Host are
+%   counted (from acceptance to release) by the workers of Jobs.  A
+%   per-address cap keeps one client from taking every connection: the
+%   others, from other addresses, are still served (idle connections
+%   are closed after idle_timeout, which serves the rest).
+
+reserve_connection(Jobs, Max, Host, How) :-
+    setting(max_per_address, PerMax),
+    (   PerMax > 0,
+        from_address(Jobs, Host, Count),
+        Count >= PerMax
+    ->  How = address(PerMax)
+    ;   reserve_worker(Jobs, Max, How0),
+        (   How0 == full
+        ->  How = full(Max)
+        ;   How = How0,
+            address_added(Jobs, Host)
+        )
+    ).
+
+address_added(Jobs, Host) :-
+    (   retract(from_address(Jobs, Host, Count0))
+    ->  Count is Count0 + 1
+    ;   Count = 1
+    ),
+    assertz(from_address(Jobs, Host, Count)).
+
+address_released(Jobs, Host) :-
+    (   retract(from_address(Jobs, Host, Count0)),
+        Count0 > 1
+    ->  Count is Count0 - 1,
+        assertz(from_address(Jobs, Host, Count))
+    ;   true
+    ).
+
+peer_host(Peer, Host) :-
+    (   Peer = Host0:_
+    ->  Host = Host0
+    ;   Host = Peer
+    ).
+
+%   release_connection(+Jobs, +Peer, -Wait): release_worker/2 for a
+%   connection from Peer.
+
+release_connection(Jobs, Peer, Wait) :-
+    peer_host(Peer, Host),
+    address_released(Jobs, Host),
+    release_worker(Jobs, Wait).
 
 %   reserve_worker(+Jobs, +Max, -How): count one more connection, for a
 %   worker that waits (How = waiting) or a new one (new), unless Max
@@ -709,7 +800,7 @@ connection_worker(Server, Serial, Client, Peer) :-
     catch(serve_job(Server, Serial, Client, Peer),
           oro_connection_end(_),            % a signal that came just after
           true),
-    with_mutex(oro_server_workers, release_worker(Server.jobs, Wait)),
+    with_mutex(oro_server_workers, release_connection(Server.jobs, Peer, Wait)),
     (   Wait == true
     ->  Next is Serial + 1,
         connection_worker(Server, Next)
@@ -765,9 +856,9 @@ end_serving(Serial, Why) :-
 stop_workers(Server) :-
     Jobs = Server.jobs,
     with_mutex(oro_server_workers, workers_stopped(Jobs)),
-    forall(thread_get_message(Jobs, serve(Client, _), [timeout(0)]),
+    forall(thread_get_message(Jobs, serve(Client, Peer), [timeout(0)]),
            ( catch(tcp_close_socket(Client), _, true),
-             with_mutex(oro_server_workers, release_worker(Jobs, _))
+             with_mutex(oro_server_workers, release_connection(Jobs, Peer, _))
            )),
     message_queue_destroy(Jobs).
 
@@ -819,7 +910,10 @@ serve_stream(Server, Serial, Pair, Peer) :-
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
                       max_params:MaxParams},
-          catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
+          MaxLines is MaxParams + 1024,     % the method, #end#, blank lines
+          catch(( oro_reader(In, Reader, [ max_request_size(Limit),
+                                           max_lines(MaxLines)
+                                         ]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
                 connection_ended(Context, Error)),
@@ -832,8 +926,9 @@ serve_stream(Server, Serial, Pair, Peer) :-
           catch(mutex_destroy(Mutex), _, true)    % held by a shutdown
         )).
 
-%   A connection silent for longer than idle_timeout is told why it is
-%   closed; other errors (the peer left, a reply it would not read
+%   A connection silent for longer than idle_timeout (holding no event
+%   subscriber, see read_request/5) is told why it is closed; other
+%   errors (the peer left, a reply it would not read
 %   within write_timeout) just end it.
 
 connection_ended(Context, error(timeout_error(read, _), _)) :-
@@ -858,10 +953,38 @@ serve_requests(Context, Reader, Out) :-
                                stop_ahead(Ahead, Catcher)).
 
 serve_requests(Context, Reader0, Out, Ahead) :-
-    oro_read_request(Reader0, Request, Reader),
+    read_request(Context, Ahead, Reader0, Request, Reader),
     (   serve_request(Request, Context, Out, Reader, Ahead)
     ->  serve_requests(Context, Reader, Out, Ahead)
     ;   true
+    ).
+
+%   read_request(+Context, +Ahead, +Reader0, -Request, -Reader): the
+%   next request.  The input's timeout is idle_timeout: a connection
+%   that sends nothing for that long is closed (connection_ended/2),
+%   unless it holds an event subscriber (a client waiting for its
+%   events sends nothing) or the helper is still answering its
+%   requests: then the read starts again, if the one that timed out
+%   consumed no byte (byte_count/2), else the connection is closed as
+%   the request begun is lost.
+
+read_request(Context, Ahead, Reader0, Request, Reader) :-
+    In = Context.in,
+    byte_count(In, Before),
+    catch(oro_read_request(Reader0, Request0, Reader1), Error, true),
+    (   var(Error)
+    ->  Request = Request0,
+        Reader = Reader1
+    ;   Error = error(timeout_error(read, _), _),
+        (   arg(1, Context.subscribers, [_|_])
+        ->  true
+        ;   ahead_busy(Ahead)
+        ),
+        byte_count(In, Before)
+    ->  debug(oro(server), 'Connection ~q silent but subscribed: kept',
+              [Context.peer]),
+        read_request(Context, Ahead, Reader0, Request, Reader)
+    ;   throw(Error)
     ).
 
 %   serve_request(+Request, +Context, +Out, +Reader, +Ahead) is semidet:
@@ -904,6 +1027,14 @@ handle_request(bad(too_large(Limit)), Context, Out) :-
     Drain is 4 * Limit,
     oro_drain_input(Context.in, Drain, 2),
     fail.
+handle_request(bad(too_many_lines(Max)), Context, Out) :-
+    !,
+    format(string(Message), "Too many parameters: the request has more \c
+           than ~D lines (at most ~D parameters).",
+           [Max, Context.max_params]),
+    with_mutex(Context.mutex,
+               oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
+                               Message)).
 handle_request(bad(encoding), Context, Out) :-
     !,
     with_mutex(Context.mutex,

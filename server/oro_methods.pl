@@ -86,12 +86,19 @@ oro_dispatch(Context, Method, Params, Reply) :-
 %   to oro_perform/3; it is prepared(Impl, Name, Args), or
 %   request(Method, Params) when the preparation failed (the request is
 %   then dispatched again by oro_perform/3, which answers with the
-%   error).  A statement that does not parse is left as text, for the
+%   error), or failed(Error) when its parsing ran out of resources
+%   (nesting, time: see oro_parse), which is then the reply.  A statement that does not parse is left as text, for the
 %   method to reject.
 
 oro_prepare(Method, Params, Prepared) :-
-    (   catch(prepare(Method, Params, Prepared0), _, fail)
-    ->  Prepared = Prepared0
+    (   catch(oro_parse_budget(prepare(Method, Params, Prepared0)), Error,
+              true)
+    ->  (   var(Error)
+        ->  Prepared = Prepared0
+        ;   Error = error(resource_error(_), _)     % would cost as much again
+        ->  Prepared = failed(Error)
+        ;   Prepared = request(Method, Params)
+        )
     ;   Prepared = request(Method, Params)
     ).
 
@@ -112,12 +119,15 @@ oro_perform(Context, request(Method, Params), Reply) :-
     oro_dispatch(Context, Method, Params, Reply).
 oro_perform(Context, prepared(Impl, Name, Args), Reply) :-
     reply(call_method(Impl, Name, Context, Args, Value), Value, Reply).
+oro_perform(_, failed(Error), Reply) :-
+    reply(throw(Error), _, Reply).
 
 %   reply(:Goal, ?Value, -Reply): the outcome of Goal, which binds Value,
-%   as a reply.
+%   as a reply.  The parsing Goal does runs within one parse budget
+%   (oro_parse_budget/1).
 
 reply(Goal, Value, Reply) :-
-    (   catch(Goal, Error, true)
+    (   catch(oro_parse_budget(Goal), Error, true)
     ->  true
     ;   Error = error(oro_method(failed), _)
     ),
@@ -183,10 +193,20 @@ statements_param(updateForAgent(string, set), 2).
 
 parse_ahead(N, Args0, Args) :-
     nth1(N, Args0, Statements, Rest),
-    (   catch(oro_statements(Statements, Triples, []), _, fail),
+    (   catch(oro_statements(Statements, Triples, []), Error,
+              rethrow_resource(Error)),
         ground(Triples)
     ->  nth1(N, Args, Triples, Rest)
     ;   Args = Args0
+    ).
+
+%   rethrow_resource(+Error): throw Error if it is a resource error, else
+%   fail (the method parses the statements again and rejects them).
+
+rethrow_resource(Error) :-
+    (   Error = error(resource_error(_), _)
+    ->  throw(Error)
+    ;   fail
     ).
 
 named_method(Lower, Sig, Impl) :-

@@ -108,7 +108,8 @@ keeps its raw newlines.
 */
 
 :- predicate_options(oro_reader/3, 3,
-                     [ max_request_size(positive_integer)
+                     [ max_request_size(positive_integer),
+                       max_lines(nonneg)
                      ]).
 
 default_max_request_size(16777216).    % 16 MiB
@@ -129,12 +130,22 @@ chunk_size(65536).                      % bytes decoded at once in long lines
 %
 %     - max_request_size(+Bytes)
 %       Maximum size of one request in bytes (default 16 MiB).
+%     - max_lines(+N)
+%       Maximum number of lines of one request, the method's and empty
+%       ones included (default 0: no limit).  Past it the rest of the
+%       request is skipped up to its `#end#` by a search of its bytes
+%       (no line is read), and the request is bad(too_many_lines(N)):
+%       16 MB of empty lines cost 43 s of CPU and 2 GB read line by
+%       line.
 
-oro_reader(In, oro_reader(In, Limit, Mode, state(none, false, [])), Options) :-
+oro_reader(In, oro_reader(In, Limit, source(In, Mode, MaxLines),
+                          state(none, false, [])), Options) :-
     must_be(list, Options),
     default_max_request_size(Default),
     option(max_request_size(Limit), Options, Default),
     must_be(positive_integer, Limit),
+    option(max_lines(MaxLines), Options, 0),
+    must_be(nonneg, MaxLines),
     must_be_input_stream(In),
     stream_property(In, encoding(Encoding)),
     byte_mode(In, Encoding, Mode).
@@ -159,12 +170,15 @@ oro_reader(In, oro_reader(In, Limit, Mode, state(none, false, [])), Options) :-
 %     - bad(encoding)
 %       The request is not valid UTF-8.  It has been skipped up to its
 %       `#end#`; the connection can continue.
+%     - bad(too_many_lines(N))
+%       The request has more than N lines (option max_lines).  It has
+%       been skipped up to its `#end#`; the connection can continue.
 %
 %   I/O errors are not caught.
 
-oro_read_request(oro_reader(In, Limit, Mode, State0), Request,
-                 oro_reader(In, Limit, Mode, State)) :-
-    request(source(In, Mode), Limit, State0, Request, State1),
+oro_read_request(oro_reader(In, Limit, Source, State0), Request,
+                 oro_reader(In, Limit, Source, State)) :-
+    request(Source, Limit, State0, Request, State1),
     (   final_request(Request)
     ->  State = state(none, false, [])
     ;   State = State1
@@ -270,20 +284,28 @@ final_request(bad(too_large(_))).
 %   request from a bare `#end#`).
 
 request(In, Limit, state(Skip0, Help0, Tokens0), Request, State) :-
+    In = source(_, _, MaxLines),
+    (   MaxLines > 0
+    ->  Lines is MaxLines + 1
+    ;   Lines = 0
+    ),
+    Budget = b(Limit, Lines),
     (   Tokens0 == [],
         Help0 == false,
         Skip0 \== lf
     ->  read_block(In, Block),
-        (   whole_request(Block, Limit, Request0)
+        (   whole_request(Block, Limit, MaxLines, Request0)
         ->  Request = Request0,
             State = state(none, false, [])
         ;   cut_block(Block, Tokens1),
-            request_start(In, Limit, Limit, Skip0, false, false, Tokens1,
+            request_start(In, Limit, Budget, Skip0, false, false, Tokens1,
                           Request, State)
         )
-    ;   request_start(In, Limit, Limit, Skip0, Help0, false, Tokens0,
+    ;   request_start(In, Limit, Budget, Skip0, Help0, false, Tokens0,
                       Request, State)
     ).
+
+
 
 %!  whole_request(+Block, +Limit, -Request) is semidet.
 %
@@ -295,7 +317,14 @@ request(In, Limit, state(Skip0, Help0, Tokens0), Request, State) :-
 %   request_start/9 gives for the same bytes (test/test_parse.pl
 %   compares them); anything else fails and goes the general way.
 
-whole_request(Block, Limit, request(Method, Params)) :-
+whole_request(Block, Limit, Request) :-
+    whole_request(Block, Limit, 0, Request).
+
+%   whole_request(+Block, +Limit, +MaxLines, -Request): as
+%   whole_request/3, for a block of at most MaxLines lines (0: any
+%   number).
+
+whole_request(Block, Limit, MaxLines, request(Method, Params)) :-
     string_length(Block, Length),
     Length =< Limit,
     sub_string(Block, Before, 7, 0, "\n#end#\n"),
@@ -308,16 +337,30 @@ whole_request(Block, Limit, request(Method, Params)) :-
     \+ help_line(Method),
     append(Params0, ["#end#", ""], Lines),
     !,
+    (   MaxLines =:= 0
+    ->  true
+    ;   length(Lines, N),                   % Params0, the #end# line
+        N =< MaxLines                       % and the method's
+    ),
     reverse(Params0, Reversed0),
     drop_empty_lines(Reversed0, Reversed),
     reverse(Reversed, Params).
 
-request_start(In, Limit, Budget, Skip0, Help0, Blank, Tokens0,
+%   The Budget of the request is b(Bytes, Lines): the bytes it may
+%   still have, and Lines is one more than the lines it may still have
+%   (counting down from max_lines + 1; from 0, never reaching 1, for no
+%   limit).
+
+request_start(In, Limit, b(Bytes, Lines), Skip0, Help0, Blank, Tokens0,
               Request, State) :-
-    read_line(In, Budget, Skip0, Tokens0, Line, Term, Used, Skip1, Tokens1),
-    Budget1 is Budget - Used,
-    start_line(Term, Line, In, Limit, Budget1, Skip1, Help0, Blank, Tokens1,
-               Request, State).
+    (   Lines =:= 1
+    ->  skip_request(In, Limit, Bytes, Tokens0, Request, State)
+    ;   read_line(In, Bytes, Skip0, Tokens0, Line, Term, Used, Skip1, Tokens1),
+        Bytes1 is Bytes - Used,
+        Lines1 is Lines - 1,
+        start_line(Term, Line, In, Limit, b(Bytes1, Lines1), Skip1, Help0,
+                   Blank, Tokens1, Request, State)
+    ).
 
 start_line(too_large, _, _, Limit, _, _, _, _, _,
            bad(too_large(Limit)), state(none, false, [])) :- !.
@@ -359,12 +402,16 @@ start_line(Term, Method, In, Limit, Budget, Skip1, _, _, Tokens1,
                      Request, State)
     ).
 
-request_body(In, Limit, Budget, Skip0, Tokens0, Method, RevParams,
+request_body(In, Limit, b(Bytes, Lines), Skip0, Tokens0, Method, RevParams,
              Request, State) :-
-    read_line(In, Budget, Skip0, Tokens0, Line, Term, Used, Skip1, Tokens1),
-    Budget1 is Budget - Used,
-    body_line(Term, Line, In, Limit, Budget1, Skip1, Tokens1,
-              Method, RevParams, Request, State).
+    (   Lines =:= 1
+    ->  skip_request(In, Limit, Bytes, Tokens0, Request, State)
+    ;   read_line(In, Bytes, Skip0, Tokens0, Line, Term, Used, Skip1, Tokens1),
+        Bytes1 is Bytes - Used,
+        Lines1 is Lines - 1,
+        body_line(Term, Line, In, Limit, b(Bytes1, Lines1), Skip1, Tokens1,
+                  Method, RevParams, Request, State)
+    ).
 
 body_line(too_large, _, _, Limit, _, _, _, _, _,
           bad(too_large(Limit)), state(none, false, [])) :- !.
@@ -399,10 +446,63 @@ resync(end, _, _, _, Skip, Tokens, bad(encoding), state(Skip, false, Tokens)) :-
 resync(too_large, _, Limit, _, _, _,
        bad(too_large(Limit)), state(none, false, [])) :- !.
 resync(eof, _, _, _, _, _, end_of_file, state(none, false, [])) :- !.
-resync(nl, In, Limit, Budget, Skip0, Tokens0, Request, State) :-
-    skip_line(In, Budget, Skip0, Tokens0, Term, Used, Skip1, Tokens1),
-    Budget1 is Budget - Used,
-    resync(Term, In, Limit, Budget1, Skip1, Tokens1, Request, State).
+resync(nl, In, Limit, b(Bytes, Lines), Skip0, Tokens0, Request, State) :-
+    skip_line(In, Bytes, Skip0, Tokens0, Term, Used, Skip1, Tokens1),
+    Bytes1 is Bytes - Used,
+    resync(Term, In, Limit, b(Bytes1, Lines), Skip1, Tokens1, Request, State).
+
+%!  skip_request(+In, +Limit, +Bytes, +Tokens0, -Request, -State) is det.
+%
+%   The current request has more lines than max_lines: skip the rest of
+%   it (Tokens0, then blocks read from In) up to its `#end#`, searching
+%   the bytes for it rather than reading lines.  Request is
+%   bad(too_many_lines(Max)), or what ends the connection: the request
+%   grew past Bytes more bytes, or the peer left.  (Its remaining lines
+%   are not checked for UTF-8: it is refused anyway.)
+
+skip_request(In, Limit, Bytes, Tokens0, Request, State) :-
+    In = source(_, _, Max),
+    maplist(token_text, Tokens0, Texts),
+    atomics_to_string(Texts, Text),
+    skip_text(Text, "", In, Limit, Bytes, bad(too_many_lines(Max)),
+              Request, State).
+
+token_text(text(Text), Text).
+token_text(nl, "\n").
+token_text(cr, "\r").
+
+%   skip_text(+Text, +Tail, +In, +Limit, +Bytes, +Bad, -Request, -State):
+%   Text follows Tail, the last bytes skipped (where a `#end#` split
+%   between two blocks may start).
+
+skip_text(Text, Tail0, In, Limit, Bytes, Bad, Request, State) :-
+    string_concat(Tail0, Text, Window),
+    string_length(Text, Length),
+    string_length(Tail0, TailLength),
+    (   end_marker(Window, Offset)
+    ->  RestAt is Offset + 5,
+        Used is RestAt - TailLength,
+        (   Used > Bytes
+        ->  Request = bad(too_large(Limit)),
+            State = state(none, false, [])
+        ;   sub_string(Window, RestAt, _, 0, Rest),
+            cut_block(Rest, Tokens),
+            Request = Bad,
+            State = state(eol, false, Tokens)
+        )
+    ;   Bytes1 is Bytes - Length,
+        (   Bytes1 < 0
+        ->  Request = bad(too_large(Limit)),
+            State = state(none, false, [])
+        ;   read_block(In, Block),
+            (   Block == ""
+            ->  Request = end_of_file,
+                State = state(none, false, [])
+            ;   last_bytes(Window, Tail),
+                skip_text(Block, Tail, In, Limit, Bytes1, Bad, Request, State)
+            )
+        )
+    ).
 
 help_line(Line) :-
     sub_string(Line, 0, 4, After, Help),
@@ -443,9 +543,10 @@ next_token(In, [], Token, Tokens) :-
 %
 %   Read the next block from Source, blocking until some bytes are
 %   available: Block is a string of bytes (characters 0..255), "" at
-%   end of file.  Source is source(In, Mode), see byte_mode/3.
+%   end of file.  Source is source(In, Mode, MaxLines), see
+%   byte_mode/3 and oro_reader/3.
 
-read_block(source(In, Mode), Block) :-
+read_block(source(In, Mode, _), Block) :-
     fill_buffer(In),
     read_pending_codes(In, Codes, []),
     (   Codes == []

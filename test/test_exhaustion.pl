@@ -772,11 +772,13 @@ exh_nested_query(Depth, Query) :-
                  cleanup(test_server_stop)
                ]).
 
-test(defaults, [true(Defaults == [16777216, 4096, 256, 0, 60, 5])]) :-
+test(defaults, [true(Defaults == [16777216, 4096, 256, 64, 30, 60, 5, 50000000, 32])]) :-
     maplist(exh_default,
             [ oro_server:max_request_size, oro_server:max_params,
-              oro_server:max_connections, oro_server:idle_timeout,
-              oro_server:write_timeout, oro_query:time_limit
+              oro_server:max_connections, oro_server:max_per_address,
+              oro_server:idle_timeout, oro_server:write_timeout,
+              oro_query:time_limit, oro_parse:inference_limit,
+              oro_parse:max_nesting
             ],
             Defaults).
 

@@ -84,10 +84,11 @@ test(idle_connection_closed, [true(Messages-Reply == [error, end_of_file]-ok("tr
     Messages = [F1, M2],
     test_call(check, ["[myself rdf:type Robot]"], Reply).
 
-%   With the idle timeout off (the default), a connection is kept.
+%   Under the default idle timeout (30 s), a connection silent for
+%   0.5 s is kept.
 
-test(no_idle_timeout_by_default, [true(Reply == ok("true"))]) :-
-    setting(oro_server:idle_timeout, 0),
+test(idle_timeout_by_default, [true(Reply == ok("true"))]) :-
+    setting(oro_server:idle_timeout, 30),
     test_server_port(Port),
     oro_connect(Port, Conn),
     call_cleanup(( oro_receive(Conn, Nothing, 0.5),

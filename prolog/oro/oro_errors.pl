@@ -193,6 +193,23 @@ error_table(domain_error(oro_resource_type, Type), server,
 error_table(permission_error(write, oro_file, File), server,
             'Error while opening ~w to output the ontology: files are only \c
              written under the save directory.', [File]).
+error_table(domain_error(oro_rdf_xml_iri, IRI), server,
+            'RDF/XML cannot write the predicate <~w> (it does not end in \c
+             an XML name): save to a .ttl (Turtle) or .nt (N-Triples) \c
+             file.', [Short]) :-
+    (   sub_atom(IRI, 0, 200, _, Start)
+    ->  atom_concat(Start, '...', Short)
+    ;   Short = IRI
+    ).
+error_table(existence_error(directory, Dir), server,
+            'Error while opening ~w: no such directory in the save \c
+             directory.', [Dir]).
+error_table(permission_error(write, oro_database_file, File), server,
+            'Refusing to write ~w: it is inside the database directory \c
+             (--db), whose journals it would destroy.', [File]).
+error_table(permission_error(write, oro_installation_file, File), server,
+            'Refusing to write ~w: it is inside the server\'s \c
+             installation; choose a --save-dir outside it.', [File]).
 error_table(existence_error(source_sink, File), server,
             'Error while opening ~w.', [File]).
 error_table(domain_error(oro_event_type, Type), invalid_event,
@@ -251,5 +268,19 @@ error_table(syntax_error(oro_sparql(Message, _Position)), invalid_query,
 error_table(resource_error(oro_query_time_limit(Seconds)), server,
             'Query time limit exceeded: the query was stopped after ~w s \c
              (setting oro_query:time_limit).', [Seconds]).
+error_table(syntax_error(oro_statement_name(Token)), illegal_statement,
+            'Not a name: ~w (a bracket or a brace may only appear in a \c
+             full IRI <...> or a quoted literal).', [Short]) :-
+    (   sub_string(Token, 0, 200, _, Start)
+    ->  string_concat(Start, "...", Short)
+    ;   Short = Token
+    ).
+error_table(resource_error(oro_nesting(Max)), server,
+            'Brackets or braces nested deeper than ~d levels: request \c
+             refused (setting oro_parse:max_nesting).', [Max]).
+error_table(resource_error(oro_parse_limit(Limit)), server,
+            'Parse budget exceeded: the request took more than ~D \c
+             inferences to parse (setting oro_parse:inference_limit).',
+            [Limit]).
 error_table(resource_error(Resource), server,
             'Out of resources (~w) while executing the request.', [Resource]).

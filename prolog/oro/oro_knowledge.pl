@@ -10,7 +10,6 @@
             oro_update/3,               % +Model, +Statements, +Profile
             oro_check/2,                % +Model, +Patterns
             oro_find/4,                 % +Model, ?Var, +Patterns, -Values
-            oro_save/2,                 % +Model, +File
             oro_robot_id/1              % -Id
           ]).
 :- use_module(library(semweb/rdf_db)).
@@ -26,6 +25,7 @@
 :- use_module(oro_query).
 :- use_module(oro_events).
 :- use_module(oro_memory).
+:- use_module(oro_save).
 :- autoload(oro_agents, [oro_agents_start/0]).  % it builds on this module
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
@@ -51,8 +51,6 @@ anything changes.
 
 :- setting(robot_id, atom, '',
            'Id of the robot: a synonym of myself (empty: none)').
-:- setting(save_dir, atom, '.',
-           'Directory under which save/1,2 may write').
 
 :- multifile user:file_search_path/2.
 :- dynamic user:file_search_path/2.
@@ -81,7 +79,8 @@ anything changes.
 %       N-Triples), loaded in order;
 %     - robot_id(+Id): a synonym of `myself`;
 %     - time_base(+MS): length of one memory time unit (default 1000);
-%     - save_dir(+Dir): where oro_save/2 may write (default `.`);
+%     - save_dir(+Dir): where oro_save/2 may write (default '': a
+%       directory of the user's, see oro_save);
 %     - db(+Dir): journal the models in Dir and restore what it holds
 %       (see oro_persist): every change reported done survives a
 %       crash.  Without it (the default) nothing is kept on disk;
@@ -93,7 +92,7 @@ oro_init(Options) :-
     option(commonsense(CommonSense), Options, true),
     option(ontologies(Files), Options, []),
     option(robot_id(RobotId), Options, ''),
-    option(save_dir(SaveDir), Options, '.'),
+    option(save_dir(SaveDir), Options, ''),
     option(time_base(TimeBase), Options, 1000),
     option(db(Db), Options, ''),
     option(silent(Silent), Options, true),
@@ -109,7 +108,7 @@ oro_init(Options) :-
     ;   true
     ),
     set_setting(robot_id, RobotId),
-    set_setting(save_dir, SaveDir),
+    set_setting(oro_save:save_dir, SaveDir),
     set_setting(oro_memory:time_base, TimeBase),
     oro_memory_reset,
     oro_store_detach,                       % the reset must not wipe it
@@ -343,52 +342,3 @@ variable_name(Text, Name) :-
     ->  domain_error(oro_variable, Text)
     ;   true
     ).
-
-		 /*******************************
-		 *             SAVE             *
-		 *******************************/
-
-%!  oro_save(+Model, +File) is det.
-%
-%   Write what is asserted in Model (its ontology layer included, less
-%   what it removed) as RDF/XML to File, relative to the `save_dir`
-%   setting, or an absolute path in that directory.  The file loads
-%   back with oro_init/1's ontologies option.
-%
-%   @error permission_error(write, oro_file, File) if File is outside
-%          the save directory, or has a `..` step.
-
-oro_save(Model0, File) :-
-    oro_resolve_model(Model0, Model),
-    must_be(atom, File),
-    save_path(File, Path),
-    oro_shared_graph(scratch(save), Graph),
-    oro_scratch_graph(Graph),
-    with_mutex(oro_write,
-               setup_call_cleanup(
-                   forall(oro_asserted(Model, S, P, O),
-                          rdf_assert(S, P, O, Graph)),
-                   rdf_save(Path, [graph(Graph)]),
-                   rdf_unload_graph(Graph))).
-
-save_path(File, Path) :-
-    setting(save_dir, Dir),
-    atomic_list_concat(Parts, /, File),
-    (   memberchk('..', Parts)
-    ->  permission_error(write, oro_file, File)
-    ;   is_absolute_file_name(File)
-    ->  (   in_directory(Dir, File)
-        ->  Path = File
-        ;   permission_error(write, oro_file, File)
-        )
-    ;   directory_file_path(Dir, File, Path)
-    ).
-
-in_directory(Dir, File) :-
-    absolute_file_name(Dir, Abs),
-    (   sub_atom(Abs, _, 1, 0, /)
-    ->  Prefix = Abs
-    ;   atom_concat(Abs, /, Prefix)
-    ),
-    atom_concat(Prefix, Rest, File),
-    Rest \== ''.

@@ -7,13 +7,18 @@
             oro_parse_statements/2,     % +Texts, -Triples
             oro_is_partial/1,           % +Triple
             oro_statements/3,           % +Statements, -Triples, -Bindings
-            oro_complete_statements/2   % +Statements, -Triples
+            oro_complete_statements/2,  % +Statements, -Triples
+            oro_parse_budget/1          % :Goal
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
+:- use_module(library(settings)).
 :- use_module(oro_names).
+
+:- meta_predicate
+    oro_parse_budget(0).
 
 /** <module> Parsing of ORO request parameters and statements
 
@@ -53,6 +58,9 @@ Errors are ISO-shaped, `error(Formal, _)`:
   | `syntax_error(oro_invalid_datatype(Type))`    | an unknown `xsd:` datatype, or an empty one |
   | `syntax_error(oro_lexical_form(Lex, Type))`   | a lexical form its datatype rejects |
   | `syntax_error(oro_statement_literal(Stmt))`   | a literal object of a predicate that needs a resource (oro_complete_statements/2) |
+  | `syntax_error(oro_statement_name(Token))`     | a name with a bracket or brace (`[[a]]`) outside `<...>` |
+  | `resource_error(oro_nesting(Max))`            | brackets or braces nested deeper than the `max_nesting` setting |
+  | `resource_error(oro_parse_limit(Limit))`      | a request whose parsing ran past the `inference_limit` setting |
 
 Texts inside error terms are strings.
 
@@ -73,7 +81,132 @@ path is left for texts with NUL.  All give the same results
 (test/test_parse.pl runs them over corpora of tricky and random
 inputs); a fast path only skips work that provably does nothing on the
 texts it takes.
+
+## Bounded cost
+
+Every text costs time and memory in proportion to its length, with a
+small constant (bench/bench_parse.pl measures the worst constructs and
+README's limits table gives the figures):
+
+  - Texts are scanned in chunks of chunk_chars/1 characters
+    (one_part/2, scan_tokenize/3), so a text full of tracked characters
+    does not make one string per character before anything is
+    decided.
+  - The depth of `[ ]` and of `{ }` the tokenizer tracks is limited
+    by the setting `max_nesting` (default 32; ORO's parameters nest 2
+    deep): past it, `resource_error(oro_nesting(Max))` is raised as soon
+    as the scan reaches it, within the first chunk of a text of nested
+    brackets however long.
+  - A name never holds a bracket or a brace outside `<...>`
+    (`syntax_error(oro_statement_name(Token))`): `[[[x]]]` is not
+    stored as a name.
+  - The parsing of one request has a CPU budget, counted in Prolog
+    inferences so that it does not depend on the machine's load: the
+    setting `inference_limit` (default 50,000,000, which the costliest
+    constructs spend in 14 s of CPU on the project's VM and plain
+    statements in 5 s; 0 for none).  oro_parse_budget/1 opens the
+    request's budget, and every public predicate of this module given
+    a text of 64 Ki characters or more spends from it (texts below that
+    cost a few milliseconds at most).  Past it,
+    `resource_error(oro_parse_limit(Limit))` is raised.
 */
+
+:- setting(max_nesting, positive_integer, 32,
+           'Deepest nesting of [ ] and of { } a request parameter may have').
+:- setting(inference_limit, nonneg, 50000000,
+           'Inferences the parsing of one request may take (a CPU budget \c
+            that does not depend on the load: 50,000,000 is 2-14 s of \c
+            CPU); 0 for no limit').
+
+%   chunk_chars(-N): texts are scanned N characters at a time.
+%   budget_chars(-N): a public predicate given a text of N characters
+%   or more spends from the parse budget.
+
+chunk_chars(16384).
+budget_chars(65536).
+
+%!  oro_parse_budget(:Goal) is semidet.
+%
+%   Run Goal once with a parse budget of its own: the parsing done by
+%   the predicates of this module within Goal takes at most the
+%   `inference_limit` setting in all (the server runs each request
+%   so).  Outside such a Goal each public call has the whole limit.
+%
+%   @error resource_error(oro_parse_limit(Limit)) if the parsing within
+%          Goal takes more.
+
+oro_parse_budget(Goal) :-
+    setting(inference_limit, Limit),
+    (   nb_current(oro_parse_left, Old)
+    ->  true
+    ;   Old = none
+    ),
+    setup_call_cleanup(nb_setval(oro_parse_left, Limit),
+                       once(Goal),
+                       restore_budget(Old)).
+
+restore_budget(none) :-
+    !,
+    nb_delete(oro_parse_left).
+restore_budget(Old) :-
+    nb_setval(oro_parse_left, Old).
+
+%   bounded(+Size, :Goal): run Goal once, the parse of texts of Size
+%   characters in all, within what is left of the parse budget when
+%   Size is budget_chars/1 or more (call_with_inference_limit/3, which
+%   costs no thread switch).
+
+bounded(Size, Goal) :-
+    budget_chars(Min),
+    (   Size < Min
+    ->  call(Goal)
+    ;   setting(inference_limit, Limit),
+        Limit > 0
+    ->  (   nb_current(oro_parse_left, Left0)
+        ->  Left = Left0
+        ;   Left = Limit
+        ),
+        statistics(inferences, I0),
+        (   Left =< 0
+        ->  Result = inference_limit_exceeded
+        ;   call_with_inference_limit(once(Goal), Left, Result)
+        ),
+        (   Result == inference_limit_exceeded
+        ->  throw(error(resource_error(oro_parse_limit(Limit)), _))
+        ;   nb_current(oro_parse_left, _)
+        ->  statistics(inferences, I1),
+            Left1 is Left - (I1-I0),
+            nb_setval(oro_parse_left, Left1)
+        ;   true
+        )
+    ;   call(Goal)
+    ).
+
+texts_size(Texts, Size) :-
+    foldl(add_text_size, Texts, 0, Size).
+
+add_text_size(Text, Size0, Size) :-
+    (   text(Text)
+    ->  atom_length(Text, Length),
+        Size is Size0 + Length
+    ;   Size = Size0
+    ).
+
+text(Text) :-
+    (   string(Text)
+    ->  true
+    ;   atom(Text)
+    ).
+
+nesting_error(Max) :-
+    throw(error(resource_error(oro_nesting(Max)), _)).
+
+:- multifile prolog:error_message//1.
+
+prolog:error_message(resource_error(oro_nesting(Max))) -->
+    [ 'Brackets or braces nested deeper than ~d levels'-[Max] ].
+prolog:error_message(resource_error(oro_parse_limit(Limit))) -->
+    [ 'The request took more than its parse budget (~D inferences)'-[Limit] ].
 
                  /*******************************
                  *           TOKENIZER          *
@@ -93,7 +226,8 @@ texts it takes.
 oro_tokenize(Text, Delimiter, Tokens) :-
     must_be(text, Text),
     delimiter_code(Delimiter, Code),
-    tokenize(Text, Code, Tokens).
+    atom_length(Text, Size),
+    bounded(Size, tokenize(Text, Code, Tokens)).
 
 delimiter_code(Delimiter, Code) :-
     (   integer(Delimiter)
@@ -127,40 +261,81 @@ tokenize(Text, Delimiter, Tokens) :-
 
 scan_tokenize(Text, Delimiter, Tokens) :-
     char_code(Sep, Delimiter),
-    split_string(Text, "[]{}\"'\\", "", [First|Parts]),
-    segment_cuts(First, Sep, 0, Cuts, Cuts1),
-    string_length(First, Pos),
-    scan_cuts(Parts, Text, Pos, Delimiter-Sep, -1, s(0, 0, 0, 0), Cuts1),
+    setting(max_nesting, Max),
+    string_length(Text, Length),
+    scan_chunks(0, Length, Text, Delimiter-Sep, Max, -1, s(0, 0, 0, 0),
+                Cuts),
     cut_tokens(Cuts, Text, 0, Tokens).
 
-%   scan_cuts(+Parts, +Text, +Pos, +Delimiter-Sep, +Prev, +State, -Cuts)
+%   scan_chunks(+Start, +Length, +Text, +Delimiter-Sep, +Max, +Prev,
+%   +State, -Cuts): the cuts of Text from offset Start on, read a chunk
+%   (chunk_chars/1) at a time.  A segment of plain text may straddle
+%   two chunks: its pieces are cut alike, as the state is the same all
+%   along it.
+
+scan_chunks(Start, Length, Text, DS, Max, Prev0, State0, Cuts) :-
+    (   Start >= Length
+    ->  Cuts = []
+    ;   chunk_chars(Size),
+        Take is min(Size, Length-Start),
+        sub_string(Text, Start, Take, _, Chunk),
+        split_string(Chunk, "[]{}\"'\\", "", [First|Parts]),
+        DS = _-Sep,
+        segment(First, Sep, Start, State0, Prev0, Prev1, FirstLength,
+                Cuts, Cuts1),
+        Pos is Start+FirstLength,
+        scan_cuts(Parts, Text, Pos, DS, Max, Prev1-State0, Prev-State,
+                  Cuts1, Cuts2),
+        Next is Start+Take,
+        scan_chunks(Next, Length, Text, DS, Max, Prev, State, Cuts2)
+    ).
+
+%   scan_cuts(+Parts, +Text, +Pos, +Delimiter-Sep, +Max, +Prev0-State0,
+%   -Prev-State, -Cuts, ?Tail)
 %
 %   The tracked character at offset Pos of Text is followed by the
-%   segment that is the first of Parts.  Cuts are the offsets of the
-%   delimiters Text splits at, as tokenizer_step/6 decides them.  (A
-%   delimiter that is itself a tracked character is decided here, and
-%   no segment holds one.)
+%   segment that is the first of Parts.  Cuts (ending in Tail) are the
+%   offsets of the delimiters Text splits at, as tokenizer_step/6
+%   decides them.  (A delimiter that is itself a tracked character is
+%   decided here, and no segment holds one.)  Prev-State is the
+%   tokenizer's after the last of Parts.  A depth past Max raises
+%   resource_error(oro_nesting(Max)).
 
-scan_cuts([], _, _, _, _, _, []).
-scan_cuts([Part|Parts], Text, Pos, D-Sep, Prev, State0, Cuts) :-
+scan_cuts([], _, _, _, _, End, End, Tail, Tail).
+scan_cuts([Part|Parts], Text, Pos, D-Sep, Max, Prev-State0, End,
+          Cuts, Tail) :-
     Index is Pos+1,
     code_at(Index, Text, C),
     tokenizer_step(C, Prev, D, State0, State, Split),
+    State = s(SB, CB, _, _),
+    (   ( SB > Max ; CB > Max )
+    ->  nesting_error(Max)
+    ;   true
+    ),
     (   Split == true
     ->  Cuts = [Pos|Cuts1]
     ;   Cuts = Cuts1
     ),
-    (   State == s(0, 0, 0, 0)
-    ->  segment_cuts(Part, Sep, Index, Cuts1, Cuts2)
-    ;   Cuts2 = Cuts1
-    ),
-    string_length(Part, Length),
-    (   Length =:= 0
-    ->  Prev1 = C
-    ;   Prev1 = -1
-    ),
+    segment(Part, Sep, Index, State, C, Prev1, Length, Cuts1, Cuts2),
     Pos1 is Index+Length,
-    scan_cuts(Parts, Text, Pos1, D-Sep, Prev1, State, Cuts2).
+    scan_cuts(Parts, Text, Pos1, D-Sep, Max, Prev1-State, End, Cuts2, Tail).
+
+%   segment(+Segment, +Sep, +Start, +State, +Prev0, -Prev, -Length,
+%   -Cuts, ?Tail): the segment of plain text Segment, of Length, at
+%   offset Start, read in State: Cuts (ending in Tail) are its
+%   delimiters if State is zero; Prev is the character before what
+%   follows it (Prev0 if it is empty, else a plain one).
+
+segment(Segment, Sep, Start, State, Prev0, Prev, Length, Cuts, Tail) :-
+    (   State == s(0, 0, 0, 0)
+    ->  segment_cuts(Segment, Sep, Start, Cuts, Tail)
+    ;   Cuts = Tail
+    ),
+    string_length(Segment, Length),
+    (   Length =:= 0
+    ->  Prev = Prev0
+    ;   Prev = -1
+    ).
 
 %   segment_cuts(+Segment, +Sep, +Start, -Cuts, ?Tail): Cuts, ending in
 %   Tail, are the offsets in Text of the delimiters Sep in Segment, a
@@ -201,8 +376,9 @@ cut_tokens([Cut|Cuts], Text, Start, [Token|Tokens]) :-
 %   code, tracking depths and quotes.
 
 general_tokenize(Text, Delimiter, Tokens) :-
+    setting(max_nesting, Max),
     string_codes(Text, Codes),
-    tokens(Codes, Delimiter, -1, Tokens).
+    tokens(Codes, Delimiter-Max, -1, Tokens).
 
 %   untracked(+Text): Text has none of the characters the tokenizer
 %   tracks, and no NUL.
@@ -254,10 +430,29 @@ quote_specials(generated).
 %   not do that, no_nul/1 looks for one.
 
 one_part(Text, Separators) :-
-    split_string(Text, Separators, "", [Part]),
-    string_length(Part, Length),
     string_length(Text, Length),
+    chunk_chars(Size),
+    (   Length =< Size
+    ->  split_string(Text, Separators, "", [Part]),
+        string_length(Part, Length)
+    ;   one_part_chunks(0, Length, Size, Text, Separators)
+    ),
     no_nul(Text).
+
+%   one_part_chunks(+Start, +Length, +Size, +Text, +Separators): the
+%   chunks of Text from Start on have none of Separators; one chunk at
+%   a time, so that a text full of them fails at its first chunk.
+
+one_part_chunks(Start, Length, Size, Text, Separators) :-
+    (   Start >= Length
+    ->  true
+    ;   Take is min(Size, Length-Start),
+        sub_string(Text, Start, Take, _, Chunk),
+        split_string(Chunk, Separators, "", [Part]),
+        string_length(Part, Take),
+        Next is Start+Take,
+        one_part_chunks(Next, Length, Size, Text, Separators)
+    ).
 
 :- if(( split_string("a\u0000b", "", "", [_, _]),
         split_string("\u0000a\u0000", "", "", ["a"])
@@ -268,28 +463,32 @@ no_nul(Text) :-
     \+ sub_atom_icasechk(Text, _, "\u0000").
 :- endif.
 
-tokens(Codes, Delimiter, Prev, [Token|Tokens]) :-
-    token(Codes, Delimiter, Prev, s(0, 0, 0, 0), TokenCodes, Rest),
+tokens(Codes, Delimiter-Max, Prev, [Token|Tokens]) :-
+    token(Codes, Delimiter-Max, Prev, s(0, 0, 0, 0), TokenCodes, Rest),
     string_codes(Token, TokenCodes),
     (   Rest == end
     ->  Tokens = []
-    ;   tokens(Rest, Delimiter, Delimiter, Tokens)
+    ;   tokens(Rest, Delimiter-Max, Delimiter, Tokens)
     ).
 
-%   token(+Codes, +Delimiter, +Prev, +State, -TokenCodes, -Rest)
+%   token(+Codes, +Delimiter-Max, +Prev, +State, -TokenCodes, -Rest)
 %
 %   Rest is `end` at the end of the text, else the codes after the
 %   delimiter that ended the token.  After a split every depth and flag
-%   is zero by construction, so the next token starts from zeros.
+%   is zero by construction, so the next token starts from zeros.  A
+%   depth past Max raises resource_error(oro_nesting(Max)).
 
 token([], _, _, _, [], end).
-token([C|Cs], D, Prev, State0, Token, Rest) :-
+token([C|Cs], D-Max, Prev, State0, Token, Rest) :-
     tokenizer_step(C, Prev, D, State0, State, Split),
     (   Split == true
     ->  Token = [],
         Rest = Cs
+    ;   State = s(SB, CB, _, _),
+        ( SB > Max ; CB > Max )
+    ->  nesting_error(Max)
     ;   Token = [C|Token1],
-        token(Cs, D, C, State, Token1, Rest)
+        token(Cs, D-Max, C, State, Token1, Rest)
     ).
 
 %   tokenizer_step(+C, +Prev, +Delimiter, +State0, -State, -Split): the
@@ -337,7 +536,8 @@ count(_,    SB,  CB,  DQ,  SQ,  SB, CB, DQ, SQ).
 
 oro_clean_value(Text, String) :-
     must_be(text, Text),
-    clean_value(Text, String).
+    atom_length(Text, Size),
+    bounded(Size, clean_value(Text, String)).
 
 clean_value(Text, String) :-
     (   plain_text(Text)                    % only spaces to trim
@@ -356,7 +556,8 @@ general_clean_value(Text, String) :-
     unescape(Inner, Text, String).
 
 %   trim(+Text, -String): Java String.trim(), without building a code
-%   list: only the whitespace at both ends is looked at.
+%   list: only the whitespace at both ends is looked at, each character
+%   in constant time (code_at/3).
 
 trim(Text, Trimmed) :-
     string_length(Text, Len),
@@ -368,7 +569,7 @@ trim(Text, Trimmed) :-
 
 skip_forward(Text, I, Len, Start) :-
     (   I =< Len,
-        string_code(I, Text, C),
+        code_at(I, Text, C),
         C =< 0'\s
     ->  I1 is I+1,
         skip_forward(Text, I1, Len, Start)
@@ -377,7 +578,7 @@ skip_forward(Text, I, Len, Start) :-
 
 skip_backward(Text, I, Start, End) :-
     (   I >= Start,
-        string_code(I, Text, C),
+        code_at(I, Text, C),
         C =< 0'\s
     ->  I1 is I-1,
         skip_backward(Text, I1, Start, End)
@@ -496,6 +697,10 @@ oro_parse_collection(Kind, Text, Elements) :-
     ;   domain_error(oneof([set, list]), Kind)
     ),
     must_be(text, Text),
+    atom_length(Text, Size),
+    bounded(Size, collection(Kind, Text, Elements)).
+
+collection(Kind, Text, Elements) :-
     collection_elements(Text, Elements0),
     (   Kind == set
     ->  set_elements(Elements0, Elements)
@@ -657,14 +862,29 @@ quoted_parts(Parts0, Q, [Element|Elements]) :-
         quoted_parts(Parts, Q, Elements)
     ).
 
-quoted_element([Piece|Parts0], Q, Element, Parts) :-
+quoted_element(Parts0, Q, Element, Parts) :-
+    element_pieces(Parts0, Q, Pieces, Parts),
+    (   Pieces = [Element]
+    ->  true
+    ;   arg(1, Q, Quote),
+        Pieces = [First|Rest],
+        foldl(quote_before(Quote), Rest, Joined, []),
+        atomics_to_string([First|Joined], Element)  % once: linear
+    ).
+
+quote_before(Quote, Piece, [Quote, Piece|Tail], Tail).
+
+%   element_pieces(+Parts0, +Q, -Pieces, -Parts): Pieces are the
+%   pieces of one element, each backslash escaping a quote taken off;
+%   the element is Pieces joined by the quote.
+
+element_pieces([Piece|Parts0], Q, Pieces, Parts) :-
     (   arg(2, Q, true),
         sub_string(Piece, Length, 1, 0, "\\")
     ->  sub_string(Piece, 0, Length, _, Head),
-        quoted_element(Parts0, Q, Tail, Parts),
-        arg(1, Q, Quote),
-        atomics_to_string([Head, Quote, Tail], Element)
-    ;   Element = Piece,
+        Pieces = [Head|Pieces1],
+        element_pieces(Parts0, Q, Pieces1, Parts)
+    ;   Pieces = [Piece],
         Parts = Parts0
     ).
 
@@ -714,6 +934,10 @@ framed(Text, Open, Close, Inner) :-
 
 oro_parse_map(Text, Pairs) :-
     must_be(text, Text),
+    atom_length(Text, Size),
+    bounded(Size, map_pairs(Text, Pairs)).
+
+map_pairs(Text, Pairs) :-
     (   framed(Text, 0'{, 0'}, Inner)
     ->  (   Inner == ""
         ->  Pairs = []
@@ -763,7 +987,8 @@ map_entry(Text, Token, Key-Value) :-
 
 oro_parse_statement(Text, Triple) :-
     must_be(text, Text),
-    parse_statement(Text, Triple).
+    atom_length(Text, Size),
+    bounded(Size, parse_statement(Text, Triple)).
 
 %!  oro_parse_statements(+Texts, -Triples) is det.
 %
@@ -772,7 +997,8 @@ oro_parse_statement(Text, Triple) :-
 
 oro_parse_statements(Texts, Triples) :-
     must_be(list(text), Texts),
-    maplist(parse_statement, Texts, Triples).
+    texts_size(Texts, Size),
+    bounded(Size, maplist(parse_statement, Texts, Triples)).
 
 %!  oro_is_partial(+Triple) is semidet.
 %
@@ -873,7 +1099,23 @@ general_statement(Text, Triple) :-
 tokens_triple(ST, PT, OT, Stmt, rdf(S, P, O)) :-
     resource_token(ST, Stmt, S),
     resource_token(PT, Stmt, P),
-    object_token(OT, Stmt, O).
+    object_token(OT, Stmt, O),
+    bracket_free_name(ST, S),
+    bracket_free_name(PT, P),
+    bracket_free_name(OT, O).
+
+%   bracket_free_name(+Token, +Term): unless Term is a name written
+%   without `<...>`, Token has no bracket nor brace: `[x]` or `{x}` is
+%   the leftover of a collection, not a name to store.
+
+bracket_free_name(Token, Term) :-
+    (   atom(Term),
+        \+ string_code(1, Token, 0'<),
+        \+ split_string(Token, "[]{}", "", [_])
+    ->  string_from_text(Token, String),
+        throw(error(syntax_error(oro_statement_name(String)), _))
+    ;   true
+    ).
 
 %   local_token(+Token, +Stmt, -Term) and local_object_token(+Token,
 %   +Stmt, -Term): as resource_token/3 and object_token/3 for a plain
@@ -1520,7 +1762,8 @@ digits_star -->
 
 oro_statements(Statements, Triples, Bindings) :-
     must_be(list, Statements),
-    statement_triples(Statements, Triples, [], Bindings0),
+    texts_size(Statements, Size),
+    bounded(Size, statement_triples(Statements, Triples, [], Bindings0)),
     reverse(Bindings0, Bindings).
 
 %!  oro_complete_statements(+Statements, -Triples) is det.
