@@ -26,7 +26,7 @@
     swipl server/oro_server.pl [--port=N] [--host=ADDR] [--ontology=FILE]...
                                [--no-commonsense] [--robot-id=ID]
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
-                               [--db=DIR]
+                               [--db=DIR] [--min-reply-latency=MS]
 
 An accept thread hands each connection to a worker thread, at most
 `max_connections` at once; each worker reads requests with
@@ -74,6 +74,10 @@ nothing.
 :- setting(event_queue, positive_integer, 10000,
            'Events a connection may have waiting to be written; a client \c
            further behind is disconnected (its watchers are released)').
+:- setting(min_reply_latency, nonneg, 0,
+           'Milliseconds a reply waits at least after its request was read \c
+           (0: none); for unpatched liboro builds, which lose a reply that \c
+           comes too fast (see README, Clients)').
 
 opt_type(port, port, between(0, 65535)).
 opt_type(host, host, atom).
@@ -85,6 +89,7 @@ opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
+opt_type(min_reply_latency, min_reply_latency, nonneg).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -108,6 +113,11 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
+  --min-reply-latency=MS
+                     Send no reply sooner than MS milliseconds after its
+                     request was read (default 0: at once); 5 keeps
+                     unpatched liboro builds from hanging (README,
+                     Clients)
   -h, --help         Show this help
 ").
 
@@ -247,8 +257,9 @@ loopback(Host) :-
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
-%   oro_store_rebuild/0; every request runs in oro_store_read/1).
-%   Server is an opaque handle.
+%   oro_store_rebuild/0; every request runs in oro_store_read/1),
+%   min_reply_latency(MS) (default: the setting min_reply_latency, 0;
+%   see reply_due/0).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -268,6 +279,9 @@ oro_server_start(Options, Server) :-
     option(db(Db), Options, ''),
     option(rebuild_garbage(Garbage), Options, 1000000),
     must_be(nonneg, Garbage),
+    setting(min_reply_latency, Latency0),
+    option(min_reply_latency(Latency), Options, Latency0),
+    must_be(nonneg, Latency),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                commonsense(CommonSense),
@@ -291,7 +305,8 @@ oro_server_start(Options, Server) :-
     message_queue_create(Control),
     message_queue_create(Jobs),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
-                        started:Started, accept:Accept, control:Control},
+                        started:Started, accept:Accept, control:Control,
+                        reply_latency:Latency},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
@@ -644,7 +659,8 @@ serve_stream(Server, Serial, Pair, Peer) :-
         ( Context = _{started:Server.started, peer:Peer, in:In, out:Out,
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
-                      max_params:MaxParams},
+                      max_params:MaxParams,
+                      reply_latency:Server.reply_latency},
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
@@ -685,6 +701,7 @@ serve_requests(Context, Reader, Out) :-
 
 serve_requests(Context, Reader0, Out, Ahead) :-
     oro_read_request(Reader0, Request, Reader),
+    request_read(Context.reply_latency),
     (   serve_request(Request, Context, Out, Reader, Ahead)
     ->  serve_requests(Context, Reader, Out, Ahead)
     ;   true
@@ -732,6 +749,7 @@ handle_request(bad(too_large(Limit)), Context, Out) :-
     fail.
 handle_request(bad(encoding), Context, Out) :-
     !,
+    reply_due,
     with_mutex(Context.mutex,
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                "The request is not valid UTF-8.")).
@@ -741,6 +759,7 @@ handle_request(request(_, Params), Context, Out) :-
     N > Max,
     !,
     format(string(Message), "Too many parameters: ~D (at most ~D).", [N, Max]),
+    reply_due,
     with_mutex(Context.mutex,
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                Message)).
@@ -766,7 +785,54 @@ answer(Context, Prepared, Out) :-
 answer(Mutex, Context, Prepared, Out) :-
     \+ closed_connection(Mutex),
     oro_store_read(oro_perform(Context, Prepared, Reply)),
-    write_reply(Reply, Out).
+    reply_due,
+    (   oro_reply_with_events(Context, write_reply(Reply))
+    ->  true
+    ;   write_reply(Reply, Out)
+    ).
+
+%   MINIMUM REPLY LATENCY
+%
+%   liboro up to 1.3.1 notes that it waits for a reply only after it has
+%   written the request: a reply read before that is taken for an
+%   unexpected message and dropped, and the call waits for ever (see
+%   README, Clients).  oro-server 0.8.2 answered slowly enough for the
+%   window not to matter; oro answers in 0.1-0.5 ms.  With the setting
+%   min_reply_latency at L > 0, the worker notes when it read each
+%   request (request_read/1) and a reply waits until L ms after that
+%   (reply_due/0), so a request that takes longer is not delayed more.
+%   The note is a global variable of the worker thread; requests
+%   answered ahead by a connection's helper (pipelined, see REQUESTS
+%   AHEAD) are not delayed: liboro never pipelines.
+
+request_read(Latency) :-
+    reply_due_time(Latency, Due),
+    (   Due == none
+    ->  true
+    ;   nb_setval(oro_reply_due, Due)
+    ).
+
+%   reply_due_time(+Latency, -Due): the time (get_time/1) a reply to a
+%   request read now is due, or `none` for a latency of 0.
+
+reply_due_time(0, none) :-
+    !.
+reply_due_time(Latency, Due) :-
+    get_time(Now),
+    Due is Now + Latency / 1000.
+
+reply_due :-
+    (   nb_current(oro_reply_due, Due),
+        Due \== none
+    ->  nb_setval(oro_reply_due, none),
+        get_time(Now),
+        Wait is Due - Now,
+        (   Wait > 0
+        ->  sleep(Wait)
+        ;   true
+        )
+    ;   true
+    ).
 
 write_reply(ok(Value), Out) :-
     oro_write_ok(Out, Value).
@@ -792,6 +858,9 @@ write_reply(error(Name, Message), Out) :-
 %   answered all it was given.  Only methods that do not use the
 %   connection's context go ahead: the helper has a copy of the context,
 %   and the subscribers an events method makes must be the worker's.
+%   Once the connection has registered an event, no request goes ahead:
+%   its replies carry the events they fire (oro_reply_with_events/2),
+%   which the worker's context knows how to take.
 %   At most ahead_max/1 requests wait for the helper, so a client
 %   cannot make the server read its requests ahead without bound.
 %
@@ -812,6 +881,7 @@ ahead_request(Request, Context, Reader, Ahead, Prepared) :-
         oro_reader_pending(Reader)
     ),
     dispatched_request(Request, Context),
+    \+ oro_connection_events(Context),
     oro_prepare(Method, Params, Prepared),
     Prepared = prepared(Impl, _, _),
     \+ uses_context(Impl).
