@@ -538,8 +538,19 @@ value_json(value(Label, R), JSON) :-
     resource_json(R, I),
     format(string(JSON), '{"name":~w, "id":~w}', [L, I]).
 
+%   resource_json(+R, -JSON): the id of a resource in the details, as
+%   oro-server 0.8.2 gives it: the name of a resource of the default
+%   namespace (`Monkey`), the full IRI of any other
+%   (`http://xmlns.com/foaf/0.1/Person`, not `foaf:Person`).
+
 resource_json(R, JSON) :-
-    oro_iri_name(R, Name),
+    (   oro_default_namespace(NS),
+        sub_atom(R, 0, _, _, NS)
+    ->  oro_iri_name(R, Name)
+    ;   rdf_is_bnode(R)
+    ->  oro_iri_name(R, Name)
+    ;   Name = R
+    ),
     json_string(Name, JSON).
 
 json_string(Text, JSON) :-
