@@ -115,7 +115,7 @@ Options:
                      more (default 1000000; 0: never)
   --min-reply-latency=MS
                      Send no reply sooner than MS milliseconds after its
-                     request was read (default 0: at once); 5 keeps
+                     request was read (default 0: at once); 10 keeps
                      unpatched liboro builds from hanging (README,
                      Clients)
   -h, --help         Show this help
