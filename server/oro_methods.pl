@@ -972,9 +972,13 @@ event_content(Values, list(Texts)) :-
 %   followed by the events waiting for the connection, in one write:
 %   first wait until the watcher thread has processed the changes the
 %   calling thread made (oro_events_sync_sent/0), so that the events of
-%   the request being answered are among them.  The caller holds the
-%   connection's mutex.  Fails, writing nothing, if the connection has
-%   registered no event.
+%   the request being answered are among them.  When Context's
+%   `events_first` is `true` (the server's events_before_reply), the
+%   events come first, then the reply, still in one write: a client
+%   that reads as liboro does then never finds an event left over after
+%   a reply (see README, Clients).  The caller holds the connection's
+%   mutex.  Fails, writing nothing, if the connection has registered no
+%   event.
 
 oro_reply_with_events(Context, Write) :-
     arg(1, Context.subscribers, [events(_, Outbox, _, _)]),
@@ -987,7 +991,10 @@ oro_reply_with_events(Context, Write) :-
     (   Events == []
     ->  Text = Reply
     ;   events_text(Events, EventsText),
-        string_concat(Reply, EventsText, Text)
+        (   Context.events_first == true
+        ->  string_concat(EventsText, Reply, Text)
+        ;   string_concat(Reply, EventsText, Text)
+        )
     ),
     Out = Context.out,
     write(Out, Text),

@@ -27,6 +27,7 @@
                                [--no-commonsense] [--robot-id=ID]
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
                                [--db=DIR] [--min-reply-latency=MS]
+                               [--events-before-reply]
 
 An accept thread hands each connection to a worker thread, at most
 `max_connections` at once; each worker reads requests with
@@ -74,6 +75,10 @@ nothing.
 :- setting(event_queue, positive_integer, 10000,
            'Events a connection may have waiting to be written; a client \c
            further behind is disconnected (its watchers are released)').
+:- setting(events_before_reply, boolean, false,
+           'Write the events a request fires for its own connection before \c
+           its reply (in the same write) rather than after it; for liboro \c
+           (see README, Clients)').
 :- setting(min_reply_latency, nonneg, 0,
            'Milliseconds a reply waits at least after its request was read \c
            (0: none); for unpatched liboro builds, which lose a reply that \c
@@ -90,6 +95,7 @@ opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fat
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
 opt_type(min_reply_latency, min_reply_latency, nonneg).
+opt_type(events_before_reply, events_before_reply, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -118,6 +124,11 @@ Options:
                      request was read (default 0: at once); 10 keeps
                      unpatched liboro builds from hanging (README,
                      Clients)
+  --events-before-reply
+                     Write the events a request fires for the client's
+                     own watchers just before its reply (same write)
+                     instead of just after: liboro then never loses its
+                     connection over them (README, Clients)
   -h, --help         Show this help
 ").
 
@@ -259,7 +270,9 @@ loopback(Host) :-
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
 %   oro_store_rebuild/0; every request runs in oro_store_read/1),
 %   min_reply_latency(MS) (default: the setting min_reply_latency, 0;
-%   see reply_due/0).  Server is an opaque handle.
+%   see reply_due/0), events_before_reply(Bool) (default: the setting
+%   events_before_reply, false; see oro_reply_with_events/2).  Server is
+%   an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -282,6 +295,9 @@ oro_server_start(Options, Server) :-
     setting(min_reply_latency, Latency0),
     option(min_reply_latency(Latency), Options, Latency0),
     must_be(nonneg, Latency),
+    setting(events_before_reply, EventsFirst0),
+    option(events_before_reply(EventsFirst), Options, EventsFirst0),
+    must_be(boolean, EventsFirst),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                commonsense(CommonSense),
@@ -306,7 +322,7 @@ oro_server_start(Options, Server) :-
     message_queue_create(Jobs),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
                         started:Started, accept:Accept, control:Control,
-                        reply_latency:Latency},
+                        reply_latency:Latency, events_first:EventsFirst},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
@@ -632,9 +648,10 @@ serve_connection(Server, Serial, Client, Peer) :-
 
 %   The connection's context: its streams, the mutex every write to it
 %   holds (replies and pushed events never interleave, and a reply is
-%   written before the events its request caused), and a slot for its
-%   event subscribers (oro_methods creates them on first registration;
-%   they are destroyed with the connection).
+%   written in one write with the events its request caused: see
+%   oro_methods, CONNECTION EVENTS), a slot for its event subscriber
+%   (oro_methods creates it on first registration; it is destroyed with
+%   the connection), and the server's reply latency and event order.
 
 serve_stream(Server, Serial, Pair, Peer) :-
     stream_pair(Pair, In, Out),
@@ -660,7 +677,8 @@ serve_stream(Server, Serial, Pair, Peer) :-
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
                       max_params:MaxParams,
-                      reply_latency:Server.reply_latency},
+                      reply_latency:Server.reply_latency,
+                      events_first:Server.events_first},
           catch(( oro_reader(In, Reader, [max_request_size(Limit)]),
                   serve_requests(Context, Reader, Out)
                 ), Error,
