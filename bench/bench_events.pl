@@ -3,7 +3,7 @@
 
         swipl bench/bench_events.pl [--samples=200] [--levels=1,100,1000]
                                     [--issue=true] [--world=100000]
-                                    [--hops=true]
+                                    [--hops=true] [--reply=true]
 
     (default levels: 1,100,1000,1000-other; W-other puts the W watchers on
     another predicate)
@@ -49,6 +49,17 @@
     the change (oro_events_sync/0), and until the subscriber's delivery
     thread calls its goal.
 
+    4. Replies carrying events (`--reply`): what an `add` costs, round
+    trip on one connection A, now that the events it fires for A's
+    watchers travel with its reply (A's worker waits until the watcher
+    thread has evaluated the change, then writes the reply and the
+    events in one write).  Cases: no watcher at all; a watcher of
+    another connection B on the predicate the add touches (A does not
+    wait); a watcher of A on another predicate (the change is not sent
+    to the watcher thread: no wait); a watcher of A on the predicate,
+    not firing (A waits for its evaluation); the same watcher firing
+    (time until the reply and the event are both read).
+
     Between phases a registration of an already registered watcher
     serves as a barrier: it is answered once the watcher thread has
     processed every change before it.
@@ -72,6 +83,7 @@ opt_type(levels, levels, term).
 opt_type(issue, issue, boolean).
 opt_type(world, world, nonneg).
 opt_type(hops, hops, boolean).
+opt_type(reply, reply, boolean).
 
 main :-
     current_prolog_flag(argv, Argv),
@@ -81,6 +93,7 @@ main :-
     option(issue(Issue), Options, true),
     option(world(World), Options, 100000),
     option(hops(Hops), Options, true),
+    option(reply(Reply), Options, true),
     bench_machine,
     (   Levels == []
     ->  true
@@ -88,6 +101,10 @@ main :-
     ),
     (   Issue == true
     ->  bench_with_server([], Port2, _, issue(Port2, World, Samples))
+    ;   true
+    ),
+    (   Reply == true
+    ->  bench_with_server([], Port3, _, reply_costs(Port3, Samples))
     ;   true
     ),
     (   Hops == true
@@ -312,6 +329,65 @@ max_text([], -) :-
 max_text(Times, Text) :-
     max_list(Times, Max),
     bench_micros(Max, Text).
+
+		 /*******************************
+		 *      REPLIES WITH EVENTS     *
+		 *******************************/
+
+reply_costs(Port, Samples) :-
+    bench_with_connection(
+        Port, A,
+        bench_with_connection(Port, B, reply_cases(A, B, Samples))).
+
+reply_cases(A, B, Samples) :-
+    format("~nAn add and the events it fires for its own connection, \c
+            round trip on that connection~n", []),
+    format("~w~t~56|~w~t~14+~w~n", [case, median, p99]),
+    call_ok(A, reset, []),
+    reply_case(A, 'no watcher', Samples, "[rc_none_~d hasColor red]", no),
+    call_ok(B, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", "[?o isOn rc_b_table]"]),
+    reply_case(A, 'watcher of another connection, same predicate', Samples,
+               "[rc_other_~d isOn floor]", no),
+    call_ok(A, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", "[?o isIn rc_box]"], _),
+    reply_case(A, 'own watcher on another predicate', Samples,
+               "[rc_pred_~d hasColor red]", no),
+    call_ok(A, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", "[?o isOn rc_table]"], Id),
+    reply_case(A, 'own watcher on the predicate, not firing', Samples,
+               "[rc_quiet_~d isOn floor]", no),
+    reply_case(A, 'own watcher firing (until reply and event read)', Samples,
+               "[rc_fire_~d isOn rc_table]", Id).
+
+%   reply_case(+Conn, +Name, +Samples, +Format, +Event): time Samples
+%   adds of format(Format, [I]); Event is `no`, or the watcher id whose
+%   event must follow each reply.
+
+reply_case(Conn, Name, Samples, Format, Event) :-
+    findall(T,
+            ( between(1, Samples, I),
+              format(string(Stmt), Format, [I]),
+              reply_sample(Conn, Stmt, Event, T)
+            ), Times),
+    length(Times, N),
+    (   N =:= Samples
+    ->  bench_summary(Times, Median, P99),
+        bench_micros(Median, M),
+        bench_micros(P99, P)
+    ;   M = failed,
+        P = '-'
+    ),
+    format("~w~t~56|~w~t~14+~w~n", [Name, M, P]),
+    flush_output.
+
+reply_sample(Conn, Stmt, Event, T) :-
+    get_time(T0),
+    bench_send(Conn, add, [Stmt]),
+    bench_receive(Conn, ok(_), 30),
+    (   Event == no
+    ->  true
+    ;   bench_receive(Conn, event(Event, _), 5)
+    ),
+    get_time(T1),
+    T is (T1 - T0) * 1.0e6.
 
 		 /*******************************
 		 *             HOPS             *

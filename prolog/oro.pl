@@ -55,6 +55,7 @@
             oro_clear_event/3,          % +Model, +Registry, +Id
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
+            oro_events_sync_sent/0,
             % categorization
             oro_similarities/4,         % +Model, +A, +B, -Similarities
             oro_differences/4,          % +Model, +A, +B, -Differences

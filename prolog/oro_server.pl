@@ -36,6 +36,7 @@
                                [--no-commonsense] [--robot-id=ID]
                                [--time-base=MS] [--save-dir=DIR] [--plugin=FILE]...
                                [--db=DIR] [--kb-port=N|--no-kb]
+                               [--min-reply-latency=MS] [--events-before-reply]
 
 An accept thread hands each connection to a worker thread, at most
 `max_connections` at once; each worker reads requests with
@@ -87,6 +88,14 @@ embedding); loading this library starts nothing.
 :- setting(event_queue, positive_integer, 10000,
            'Events a connection may have waiting to be written; a client \c
            further behind is disconnected (its watchers are released)').
+:- setting(events_before_reply, boolean, false,
+           'Write the events a request fires for its own connection before \c
+           its reply (in the same write) rather than after it; for liboro \c
+           (see README, Clients)').
+:- setting(min_reply_latency, nonneg, 0,
+           'Milliseconds a reply waits at least after its request was read \c
+           (0: none); for unpatched liboro builds, which lose a reply that \c
+           comes too fast (see README, Clients)').
 
 opt_type(port, port, between(0, 65535)).
 opt_type(host, host, atom).
@@ -107,6 +116,8 @@ opt_type(debug, debug, atom).
 opt_type(idle_timeout, idle_timeout, number).
 opt_type(max_connections, max_connections, positive_integer).
 opt_type(max_per_address, max_per_address, nonneg).
+opt_type(min_reply_latency, min_reply_latency, nonneg).
+opt_type(events_before_reply, events_before_reply, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
    or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
@@ -152,6 +163,16 @@ Options:
   --max-per-address=N
                      Serve at most N connections from one client address
                      (default 64; 0: no limit)
+  --min-reply-latency=MS
+                     Send no reply sooner than MS milliseconds after its
+                     request was read (default 0: at once); 10 keeps
+                     unpatched liboro builds from hanging (README,
+                     Clients)
+  --events-before-reply
+                     Write the events a request fires for the client's
+                     own watchers just before its reply (same write)
+                     instead of just after: liboro then never loses its
+                     connection over them (README, Clients)
   -h, --help         Show this help
 
 Settings, each also an option (and a setting(Name, Value) of --config):
@@ -420,7 +441,10 @@ oro_server_kb_port(Server, Port) :-
 %   unless given, so that servers started here never clash; 0 picks a
 %   free port), silent(Bool) (default true; false reports the ontology
 %   loads: see oro_init/1), idle_timeout(S), max_connections(N) and
-%   max_per_address(N) (set the settings of the same names).  Server is
+%   max_per_address(N) (set the settings of the same names),
+%   min_reply_latency(MS) (default: the setting min_reply_latency, 0;
+%   see reply_due/0), events_before_reply(Bool) (default: the setting
+%   events_before_reply, false; see oro_reply_with_events/2).  Server is
 %   an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
@@ -447,6 +471,12 @@ oro_server_start(Options, Server) :-
              option(Option, Options)
            ),
            set_setting(Name, Value)),
+    setting(min_reply_latency, Latency0),
+    option(min_reply_latency(Latency), Options, Latency0),
+    must_be(nonneg, Latency),
+    setting(events_before_reply, EventsFirst0),
+    option(events_before_reply(EventsFirst), Options, EventsFirst0),
+    must_be(boolean, EventsFirst),
     findall(F, member(ontology(F), Options), Files),
     oro_init([ db(Db),
                silent(Silent),
@@ -477,7 +507,8 @@ oro_server_start(Options, Server) :-
     ),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
                         started:Started, accept:Accept, control:Control,
-                        kbapi:KbApi},
+                        kbapi:KbApi,
+                        reply_latency:Latency, events_first:EventsFirst},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
@@ -879,9 +910,10 @@ serve_connection(Server, Serial, Client, Peer) :-
 
 %   The connection's context: its streams, the mutex every write to it
 %   holds (replies and pushed events never interleave, and a reply is
-%   written before the events its request caused), and a slot for its
-%   event subscribers (oro_methods creates them on first registration;
-%   they are destroyed with the connection).
+%   written in one write with the events its request caused: see
+%   oro_methods, CONNECTION EVENTS), a slot for its event subscriber
+%   (oro_methods creates it on first registration; it is destroyed with
+%   the connection), and the server's reply latency and event order.
 
 serve_stream(Server, Serial, Pair, Peer) :-
     stream_pair(Pair, In, Out),
@@ -909,7 +941,9 @@ serve_stream(Server, Serial, Pair, Peer) :-
                       id:Id,
                       mutex:Mutex, end:End,
                       subscribers:slot([]),
-                      max_params:MaxParams},
+                      max_params:MaxParams,
+                      reply_latency:Server.reply_latency,
+                      events_first:Server.events_first},
           MaxLines is MaxParams + 1024,     % the method, #end#, blank lines
           catch(( oro_reader(In, Reader, [ max_request_size(Limit),
                                            max_lines(MaxLines)
@@ -954,6 +988,7 @@ serve_requests(Context, Reader, Out) :-
 
 serve_requests(Context, Reader0, Out, Ahead) :-
     read_request(Context, Ahead, Reader0, Request, Reader),
+    request_read(Context.reply_latency),
     (   serve_request(Request, Context, Out, Reader, Ahead)
     ->  serve_requests(Context, Reader, Out, Ahead)
     ;   true
@@ -1037,6 +1072,7 @@ handle_request(bad(too_many_lines(Max)), Context, Out) :-
                                Message)).
 handle_request(bad(encoding), Context, Out) :-
     !,
+    reply_due,
     with_mutex(Context.mutex,
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                "The request is not valid UTF-8.")).
@@ -1046,6 +1082,7 @@ handle_request(request(_, Params), Context, Out) :-
     N > Max,
     !,
     format(string(Message), "Too many parameters: ~D (at most ~D).", [N, Max]),
+    reply_due,
     with_mutex(Context.mutex,
                oro_write_error(Out, "laas.openrobots.ontology.exceptions.OntologyServerException",
                                Message)).
@@ -1075,7 +1112,54 @@ answer(Mutex, Context, Prepared, Out) :-
     get_time(End),
     Seconds is End - Start,
     oro_log_request(Context.id, Context.peer, Prepared, Seconds, Reply),
-    write_reply(Reply, Out).
+    reply_due,
+    (   oro_reply_with_events(Context, write_reply(Reply))
+    ->  true
+    ;   write_reply(Reply, Out)
+    ).
+
+%   MINIMUM REPLY LATENCY
+%
+%   liboro up to 1.3.1 notes that it waits for a reply only after it has
+%   written the request: a reply read before that is taken for an
+%   unexpected message and dropped, and the call waits for ever (see
+%   README, Clients).  oro-server 0.8.2 answered slowly enough for the
+%   window not to matter; oro answers in 0.1-0.5 ms.  With the setting
+%   min_reply_latency at L > 0, the worker notes when it read each
+%   request (request_read/1) and a reply waits until L ms after that
+%   (reply_due/0), so a request that takes longer is not delayed more.
+%   The note is a global variable of the worker thread; requests
+%   answered ahead by a connection's helper (pipelined, see REQUESTS
+%   AHEAD) are not delayed: liboro never pipelines.
+
+request_read(Latency) :-
+    reply_due_time(Latency, Due),
+    (   Due == none
+    ->  true
+    ;   nb_setval(oro_reply_due, Due)
+    ).
+
+%   reply_due_time(+Latency, -Due): the time (get_time/1) a reply to a
+%   request read now is due, or `none` for a latency of 0.
+
+reply_due_time(0, none) :-
+    !.
+reply_due_time(Latency, Due) :-
+    get_time(Now),
+    Due is Now + Latency / 1000.
+
+reply_due :-
+    (   nb_current(oro_reply_due, Due),
+        Due \== none
+    ->  nb_setval(oro_reply_due, none),
+        get_time(Now),
+        Wait is Due - Now,
+        (   Wait > 0
+        ->  sleep(Wait)
+        ;   true
+        )
+    ;   true
+    ).
 
 write_reply(ok(Value), Out) :-
     oro_write_ok(Out, Value).
@@ -1101,6 +1185,9 @@ write_reply(error(Name, Message), Out) :-
 %   answered all it was given.  Only methods that do not use the
 %   connection's context go ahead: the helper has a copy of the context,
 %   and the subscribers an events method makes must be the worker's.
+%   Once the connection has registered an event, no request goes ahead:
+%   its replies carry the events they fire (oro_reply_with_events/2),
+%   which the worker's context knows how to take.
 %   At most ahead_max/1 requests wait for the helper, so a client
 %   cannot make the server read its requests ahead without bound.
 %
@@ -1121,6 +1208,7 @@ ahead_request(Request, Context, Reader, Ahead, Prepared) :-
         oro_reader_pending(Reader)
     ),
     dispatched_request(Request, Context),
+    \+ oro_connection_events(Context),
     oro_prepare(Method, Params, Prepared),
     Prepared = prepared(Impl, _, _),
     \+ uses_context(Impl).

@@ -3,6 +3,8 @@
             oro_prepare/3,              % +Method, +Params, -Prepared
             oro_perform/3,              % +Context, +Prepared, -Reply
             oro_connection_closed/1,    % +Context
+            oro_connection_events/1,    % +Context
+            oro_reply_with_events/2,    % +Context, :Write
             oro_method_signature/2,     % ?Name, ?Signature
             oro_simple_signature/2      % +Signature, -Text
           ]).
@@ -625,8 +627,19 @@ value_json(value(Label, R), JSON) :-
     resource_json(R, I),
     format(string(JSON), '{"name":~w, "id":~w}', [L, I]).
 
+%   resource_json(+R, -JSON): the id of a resource in the details, as
+%   oro-server 0.8.2 gives it: the name of a resource of the default
+%   namespace (`Monkey`), the full IRI of any other
+%   (`http://xmlns.com/foaf/0.1/Person`, not `foaf:Person`).
+
 resource_json(R, JSON) :-
-    oro_iri_name(R, Name),
+    (   oro_default_namespace(NS),
+        sub_atom(R, 0, _, _, NS)
+    ->  oro_iri_name(R, Name)
+    ;   rdf_is_bnode(R)
+    ->  oro_iri_name(R, Name)
+    ;   Name = R
+    ),
     json_string(Name, JSON).
 
 json_string(Text, JSON) :-
@@ -877,7 +890,7 @@ method(registerEventForAgent(string, string, string, string, list), events,
        "Registers an event with a variable on an agent's model; returns its id.",
        context(m_register_event_for_agent)).
 method(clearEvents, events,
-       "Removes every event registered with registerEvent.",
+       "Removes every event of the robot's model, registered with registerEvent or registerEventForAgent.",
        m_clear_events).
 method(clearEvent(string), events,
        "Removes the event with this id.",
@@ -930,62 +943,170 @@ agent_model(Agent, Model) :-
     atom_string(Name, Agent),
     oro_resolve_model(Name, Model).
 
-%   The subscriber of a connection, made on first use: one for all its
-%   watchers (in every registry), so its events keep their commit
-%   order; they are written on the connection under the connection's
-%   mutex.  The connection is ended (the context's `end` closure makes
-%   its thread throw oro_connection_end(Why)) when the subscriber falls
-%   too far behind (more than the setting oro_server:event_queue events
-%   waiting to be written), or when an event cannot be written (the client left, or
-%   did not read for write_timeout seconds): then the events still
-%   queued are dropped at once instead of each waiting for the same
-%   timeout.
+%   CONNECTION EVENTS
+%
+%   A connection's events are written so that a client never finds an
+%   event where it waits for a reply (ORO-SPEC §7.4; liboro reads the
+%   reply at once after an event and takes its absence for a lost
+%   connection):
+%
+%     - the events a request fires for the connection's own watchers
+%       follow its reply in the same write, and the next request is
+%       not answered before them;
+%     - the events other connections' changes fire are written between
+%       the connection's replies: with the reply when a request is in
+%       progress, else by the connection's event writer as soon as they
+%       are fired.
+%
+%   Each event is written once, in commit order.  The connection has
+%   one subscriber for all its watchers (in every registry), made on
+%   first registration with in_watcher(true): the watcher thread hands
+%   it each firing at once, and it only puts the firing in the
+%   connection's outbox (a bounded queue, the setting
+%   oro_server:event_queue) and rings the writer's doorbell, never
+%   waiting.  Whatever writes to the connection holds its mutex, and
+%   the outbox is only emptied under it: by the worker after a reply
+%   (oro_reply_with_events/2), which first waits for the watcher thread
+%   to have processed the changes of its own request
+%   (oro_events_sync_sent/0), or by the event writer, a thread of the
+%   connection woken by the doorbell.  So an event taken from the outbox
+%   is written before any later one.  Reading the outbox only under the
+%   mutex is what keeps the order: a writer that took an event and then
+%   waited for the mutex would write it after the newer ones the reply
+%   took meanwhile.
+%
+%   The connection is ended (the context's `end` closure makes its
+%   thread throw oro_connection_end(Why)) when the outbox is full (the
+%   client fell too far behind), or when an event cannot be written
+%   (the client left, or did not read for write_timeout seconds): then
+%   the events still queued are dropped at once.
+%
+%   Context.subscribers is slot([]) until the first registration, then
+%   slot([events(Subscriber, Outbox, Doorbell, Writer)]).
 
 connection_subscriber(Context, Subscriber) :-
     Slot = Context.subscribers,
     arg(1, Slot, Subscribers),
-    (   Subscribers = [Subscriber0]
+    (   Subscribers = [events(Subscriber0, _, _, _)]
     ->  Subscriber = Subscriber0
-    ;   Sink = sink(Context.out, Context.mutex, Context.end, open),
-        setting(oro_server:event_queue, MaxQueue),
-        oro_subscriber_create(deliver_event(Sink), Subscriber,
-                              [ max_queue(MaxQueue),
-                                on_overflow(end_connection(Sink, events_overflow))
-                              ]),
-        nb_setarg(1, Slot, [Subscriber])
+    ;   setting(oro_server:event_queue, MaxQueue),
+        message_queue_create(Outbox, [max_size(MaxQueue)]),
+        message_queue_create(Doorbell, [max_size(1)]),
+        End = Context.end,
+        oro_subscriber_create(deliver_event(Outbox, Doorbell, End), Subscriber,
+                              [in_watcher(true)]),
+        Sink = sink(Context.out, Context.mutex, End, Outbox),
+        thread_create(event_writer(Doorbell, Sink), Writer, []),
+        nb_setarg(1, Slot, [events(Subscriber, Outbox, Doorbell, Writer)])
     ).
 
-deliver_event(Sink, Id, Content) :-
-    Sink = sink(Out, Mutex, _, State),
-    (   State == open
-    ->  event_content(Content, Value),
-        catch(with_mutex(Mutex, oro_write_event(Out, Id, Value)),
+%   deliver_event(+Outbox, +Doorbell, +End, +Id, +Content): called by
+%   the watcher thread for each firing; never waits.
+
+deliver_event(Outbox, Doorbell, End, Id, Content) :-
+    (   thread_send_message(Outbox, event(Id, Content), [timeout(0)])
+    ->  ignore(thread_send_message(Doorbell, ring, [timeout(0)]))
+    ;   debug(oro(server), 'Event ~w: the client fell behind', [Id]),
+        call(End, events_overflow)
+    ).
+
+event_writer(Doorbell, Sink) :-
+    catch(event_writer_loop(Doorbell, Sink), oro_event_writer_stop, true).
+
+event_writer_loop(Doorbell, Sink) :-
+    thread_get_message(Doorbell, ring),
+    Sink = sink(Out, Mutex, End, Outbox),
+    (   catch(with_mutex(Mutex, write_events(Outbox, Out)),
               error(Error, _),
-              ( debug(oro(server), 'Event ~w not delivered: ~q', [Id, Error]),
-                end_connection(Sink, write_failed)
+              ( debug(oro(server), 'Events not delivered: ~q', [Error]),
+                call(End, write_failed),
+                fail
               ))
-    ;   true                            % the connection is ending
+    ->  event_writer_loop(Doorbell, Sink)
+    ;   true                                % the connection is ending
     ).
 
-end_connection(Sink, Why) :-
-    nb_setarg(4, Sink, ended),
-    arg(3, Sink, End),
-    call(End, Why).
+%   write_events(+Outbox, +Out): write the events the outbox holds, in
+%   one write; nothing if the worker took them.
+
+write_events(Outbox, Out) :-
+    oro_drain_queue(Outbox, Events),
+    (   Events == []
+    ->  true
+    ;   events_text(Events, Text),
+        write(Out, Text),
+        flush_output(Out)
+    ).
+
+events_text(Events, Text) :-
+    with_output_to(string(Text),
+                   ( current_output(S),
+                     forall(member(event(Id, Content), Events),
+                            ( event_content(Content, Value),
+                              oro_write_event(S, Id, Value)
+                            ))
+                   )).
 
 event_content([], void) :-
     !.
 event_content(Values, list(Texts)) :-
     distinct_texts(Values, Texts).
 
+:- meta_predicate
+    oro_reply_with_events(+, 1).
+
+%!  oro_reply_with_events(+Context, :Write) is semidet.
+%
+%   Write a reply to the connection of Context with call(Write, Stream),
+%   followed by the events waiting for the connection, in one write:
+%   first wait until the watcher thread has processed the changes the
+%   calling thread made (oro_events_sync_sent/0), so that the events of
+%   the request being answered are among them.  When Context's
+%   `events_first` is `true` (the server's events_before_reply), the
+%   events come first, then the reply, still in one write: a client
+%   that reads as liboro does then never finds an event left over after
+%   a reply (see README, Clients).  The caller holds the connection's
+%   mutex.  Fails, writing nothing, if the connection has registered no
+%   event.
+
+oro_reply_with_events(Context, Write) :-
+    arg(1, Context.subscribers, [events(_, Outbox, _, _)]),
+    oro_events_sync_sent,
+    oro_drain_queue(Outbox, Events),
+    with_output_to(string(Reply),
+                   ( current_output(S),
+                     call(Write, S)
+                   )),
+    (   Events == []
+    ->  Text = Reply
+    ;   events_text(Events, EventsText),
+        (   Context.events_first == true
+        ->  string_concat(EventsText, Reply, Text)
+        ;   string_concat(Reply, EventsText, Text)
+        )
+    ),
+    Out = Context.out,
+    write(Out, Text),
+    flush_output(Out).
+
+%!  oro_connection_events(+Context) is semidet.
+%
+%   True if the connection of Context has registered an event (its
+%   replies are then written by oro_reply_with_events/2).
+
+oro_connection_events(Context) :-
+    arg(1, Context.subscribers, [_]).
+
 %!  oro_connection_closed(+Context) is det.
 %
-%   Release what a connection holds: its event subscribers (and the
-%   watchers only they subscribed to).  Events still queued for the
-%   connection are dropped, and a write of an event in progress is
-%   interrupted: after an overflow it may be blocked on a client that
-%   does not read, for up to write_timeout.  What such a write left in
-%   the output buffer is not waited for either: the output's timeout is
-%   lowered for the final close (every reply was flushed when written).
+%   Release what a connection holds: its event subscriber (and the
+%   watchers only it subscribed to) and its event writer.  Events still
+%   queued for the connection are dropped, and a write of events in
+%   progress is interrupted: after an overflow it may be blocked on a
+%   client that does not read, for up to write_timeout.  What such a
+%   write left in the output buffer is not waited for either: the
+%   output's timeout is lowered for the final close (every reply was
+%   flushed when written).
 
 oro_connection_closed(Context) :-
     catch(release_subscribers(Context),
@@ -994,13 +1115,20 @@ oro_connection_closed(Context) :-
     catch(set_stream(Context.out, timeout(0.1)), _, true).
 
 release_subscribers(Context) :-
-    arg(1, Context.subscribers, Subscribers),
-    forall(member(Subscriber, Subscribers),
-           catch(oro_subscriber_destroy(Subscriber, [abort(true)]), E,
-                 ( E = oro_connection_end(_)
-                 ->  throw(E)
-                 ;   print_message(warning, E)
-                 ))).
+    Slot = Context.subscribers,
+    arg(1, Slot, Subscribers),
+    forall(member(events(Subscriber, Outbox, Doorbell, Writer), Subscribers),
+           ( catch(oro_subscriber_destroy(Subscriber), E,
+                   ( E = oro_connection_end(_)
+                   ->  throw(E)
+                   ;   print_message(warning, E)
+                   )),
+             catch(thread_signal(Writer, throw(oro_event_writer_stop)), _, true),
+             catch(thread_join(Writer, _), _, true),
+             catch(message_queue_destroy(Outbox), _, true),
+             catch(message_queue_destroy(Doorbell), _, true)
+           )),
+    nb_setarg(1, Slot, []).
 
 		 /*******************************
 		 *            HELPERS           *

@@ -924,6 +924,47 @@ test(details_unknown, true(Name == "com.hp.hpl.jena.shared.NotFoundException")) 
 
 :- end_tests(srv_infos).
 
+%   The ids of getResourceDetails: the name of a resource of the default
+%   namespace, the full IRI of any other, as oro-server 0.8.2 gives them
+%   (foaf:Person is http://xmlns.com/foaf/0.1/Person), for the resource
+%   described and for those it lists.
+
+srv_start_equivalent :-
+    test_fixture('equivalent_properties.ttl', File),
+    test_server_start([commonsense(false), ontology(File)]).
+
+:- begin_tests(srv_details_ids,
+               [ setup(srv_start_equivalent),
+                 cleanup(srv_stop)
+               ]).
+
+test(foreign_class, true(Id-Name == "http://xmlns.com/foaf/0.1/Person"-"person")) :-
+    test_call(getResourceDetails, ['foaf:Person'], Reply),
+    srv_details(Reply, Details),
+    memberchk("id"-Id, Details),
+    memberchk("name"-Name, Details).
+test(foreign_class_listed, true(Classes == ["http://xmlns.com/foaf/0.1/Person"])) :-
+    test_call(getResourceDetails, [someone], Reply),
+    srv_details(Reply, Details),
+    memberchk("attributes"-Attributes, Details),
+    memberchk(Classes0, Attributes),
+    memberchk("id"-"classes", Classes0),
+    memberchk("values"-Values, Classes0),
+    findall(Id, ( member(V, Values), memberchk("id"-Id, V) ), Classes).
+test(default_namespace, true(Id-Parents == "Shrub"-["Item"])) :-
+    test_call(getResourceDetails, ['Shrub'], Reply),
+    srv_details(Reply, Details),
+    memberchk("id"-Id, Details),
+    memberchk("attributes"-[SuperClasses|_], Details),
+    memberchk("values"-Values, SuperClasses),
+    findall(P, ( member(V, Values), memberchk("id"-P, V) ), Parents).
+test(full_iri_given, true(Id == "http://example.org/property/hue")) :-
+    test_call(getResourceDetails, ['<http://example.org/property/hue>'], Reply),
+    srv_details(Reply, Details),
+    memberchk("id"-Id, Details).
+
+:- end_tests(srv_details_ids).
+
 %   srv_details(+Reply, -Details): the JSON of getResourceDetails with
 %   the order of `values` and `sameAs` lists ignored.
 

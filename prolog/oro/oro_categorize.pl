@@ -75,9 +75,9 @@ The algorithms are those of oro-server 0.8.2 (§10), made deterministic
     *all* values, which is what a planner filters on; the two agree
     whenever an individual has at most one value per property.
   - Equivalent properties found best together (`hasColor`,
-    `mainColorOfObject` and `dbp:color` in the OpenRobots ontology) say
-    the same thing: one stays, preferably one asserted for one of the
-    individuals, then one of the default namespace, then the first IRI.
+    `mainColorOfObject` and `dbp:color` in the OpenRobots ontology) are
+    all listed, as oro-server 0.8.2 lists them: the values are inferred
+    through each of them.
   - Literals are compared by value, as everywhere in oro (`12` equals
     `"12"^^xsd:integer`).  Blank nodes are never values.
   - Every list comes back in a stable order: classes and properties in
@@ -552,40 +552,15 @@ aggregate_max_count(M, Largest) :-
 
 %   Step 7: among several kept properties, drop the direct
 %   super-properties of another kept one, when an individual has both.
-%   Equivalent properties (each a super-property of the other) say the
-%   same thing: only one of them stays, the first of
-%   equivalent_rank/4's order.
+%   Equivalent properties (each a super-property of the other) are not
+%   strictly above one another: they all stay, as oro-server 0.8.2 lists
+%   them (the properties through which the values are inferred, as
+%   getDifferences shows them too).
 
 prune_kept(_, _, [P], [P]) :-
     !.
 prune_kept(Model, Profiles, Kept, Best) :-
-    exclude(super_of_kept(Model, Profiles, Kept), Kept, Best0),
-    exclude(equivalent_preferred(Model, Profiles, Best0), Best0, Best).
-
-equivalent_preferred(Model, Profiles, Kept, P) :-
-    member(Q, Kept),
-    Q \== P,
-    oro_subproperty(Model, Q, P),
-    oro_subproperty(Model, P, Q),
-    equivalent_rank(Model, Profiles, Q, RankQ),
-    equivalent_rank(Model, Profiles, P, RankP),
-    RankQ @< RankP,
-    !.
-
-%   equivalent_rank(+Model, +Profiles, +P, -Rank): asserted for one of
-%   the individuals first, then in the default namespace, then by IRI.
-
-equivalent_rank(Model, Profiles, P, rank(Asserted, Default, P)) :-
-    (   member(X-_, Profiles),
-        oro_asserted(Model, X, P, _)
-    ->  Asserted = 0
-    ;   Asserted = 1
-    ),
-    oro_default_namespace(NS),
-    (   sub_atom(P, 0, _, _, NS)
-    ->  Default = 0
-    ;   Default = 1
-    ).
+    exclude(super_of_kept(Model, Profiles, Kept), Kept, Best).
 
 super_of_kept(Model, Profiles, Kept, P) :-
     member(Q, Kept),

@@ -14,7 +14,8 @@
             oro_subscribe/7,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Id
             oro_subscribe/8,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Subscription, +Options
             oro_unsubscribe/1,          % +IdOrSubscription
-            oro_events_sync/0
+            oro_events_sync/0,
+            oro_events_sync_sent/0
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -287,6 +288,23 @@ oro_events_reset :-
 
 oro_events_sync :-
     call_watcher(sync).
+
+%!  oro_events_sync_sent is det.
+%
+%   Wait until the watcher thread has processed the changes the calling
+%   thread committed and sent it since its last call (the changes no
+%   watcher depends on are not sent): their events are then queued to
+%   the subscribers, and delivered to those made with
+%   in_watcher(true).  True at once when it sent none, so a server
+%   thread may call it after every request at no cost to a request that
+%   fired nothing.
+
+oro_events_sync_sent :-
+    (   nb_current(oro_events_sent, true)
+    ->  nb_setval(oro_events_sent, false),
+        oro_events_sync
+    ;   true
+    ).
 
 call_watcher(Request) :-
     call_watcher(Request, true).
@@ -632,7 +650,8 @@ flush_changes :-
         ),
         rdf_snapshot(Snapshot),
         thread_send_message(oro_watcher_queue,
-                            change(Snapshot, Touched, Schema, Delta))
+                            change(Snapshot, Touched, Schema, Delta)),
+        nb_setval(oro_events_sent, true)    % see oro_events_sync_sent/0
     ;   true
     ).
 
@@ -825,11 +844,15 @@ oro_name_class(Name, Class) :-
 
 %!  oro_clear_events(+Model) is det.
 %
-%   Remove every watcher of Model registered without an agent (plain
-%   registerEvent): ORO's clearEvents().
+%   Remove every watcher of Model that clients registered, with or
+%   without an agent (registries `plain` and `agent`): ORO's
+%   clearEvents() on the robot's model (ORO-SPEC §7.1), which also
+%   removes what registerEventForAgent(myself, ...) registered, as
+%   pyoro's subscribe() does.  oro's own (`internal`) watchers stay.
 
 oro_clear_events(Model) :-
-    oro_clear_events(Model, plain).
+    oro_clear_events(Model, plain),
+    oro_clear_events(Model, agent).
 
 %!  oro_clear_events(+Model, +Registry) is det.
 %
