@@ -7,7 +7,8 @@
             oro_write_error/3,          % +Out, +ExceptionName, +Message
             oro_write_event/3,          % +Out, +WatcherId, +Content
             oro_write_closing/1,        % +Out
-            oro_encode_value/2          % +Value, -String
+            oro_encode_value/2,         % +Value, -String
+            oro_encode_string/2         % +Text, -Quoted
           ]).
 :- use_module(library(error)).
 :- use_module(library(option)).
@@ -1129,6 +1130,21 @@ element(E, T0, T) :-
         value(E, T0, T)
     ).
 
+%!  oro_encode_string(+Text, -Quoted) is det.
+%
+%   Quoted is Text as a string inside a list or a map of a value line
+%   (see oro_encode_value/2), for replies that build their text
+%   themselves, such as the JSON of `getResourceDetails`: liboro
+%   tokenises every reply that looks like a map, so a JSON escape such
+%   as `\t` there would abort it.
+%
+%   @error type_error(text, Text) if Text is not text.
+
+oro_encode_string(Text, Quoted) :-
+    must_be_text(Text, String),
+    element_string(String, Parts, []),
+    atomics_to_string(Parts, Quoted).
+
 element_string(Text, ["\"", Escaped, "\""|T], T) :-
     text_string(Text, String),
     (   plain_element(String)
@@ -1207,6 +1223,12 @@ plain_element(String) :-
 %   A plain string reply is Quote + Text + Quote: String verbatim when
 %   that is safe, else escaped for Python (see oro_encode_value/2).
 
+reply_string(String, Quote, Text) :-
+    split_string(String, "\n\r\"", "", [_]),   % the usual case: one scan
+    \+ sub_string(String, _, _, _, "\u0000"),
+    !,
+    Quote = "\"",
+    Text = String.
 reply_string(String, Quote, Text) :-
     (   split_string(String, "\n\r", "", [_]),
         \+ sub_string(String, _, _, _, "\u0000"),

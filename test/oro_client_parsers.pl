@@ -46,7 +46,7 @@ line is `eval()`ed, and a SyntaxError or NameError leaves the line as a
 string.  python_literal/2 implements the part of Python 3 expression
 syntax and evaluation that such lines can hold: string literals with
 Python's escapes (and implicit concatenation), int and float literals,
-`True`, `False`, `None`, lists, dicts and sets, unary and binary `+` and
+`True`, `False`, `None`, lists, dicts, sets and tuples, unary and binary `+` and
 `-`, comments; names are NameErrors, source with NUL a SyntaxError
 (ValueError before Python 3.11.4).  What lies outside this subset is
 reported as unsupported(What), never guessed.
@@ -58,7 +58,7 @@ Results:
     OntologyServerException liboro reports to its caller; crash(Why)
     for what aborts the client or corrupts its stream.
   - pyoro: value(V) with V one of str(S), num(Text, N), bool(B), none,
-    list(Vs), dict(Pairs), set(Vs); raw(Line) when eval() failed with a
+    list(Vs), dict(Pairs), set(Vs), tuple(Vs); raw(Line) when eval() failed with a
     SyntaxError or NameError; skipped for an empty line; crash(Why) for
     an exception pyoro does not catch; unsupported(What).
 */
@@ -335,7 +335,7 @@ python_literal(Text, Result) :-
     (   memberchk(0, Codes)
     ->  Result = crash(nul_in_source)   % SyntaxError since 3.11.4
     ;   catch(( py_tokens(Codes, Tokens),
-                (   phrase(py_expr(Tree), Tokens)
+                (   phrase(py_top(Tree), Tokens)
                 ->  py_eval(Tree, Value),
                     Result = value(Value)
                 ;   Result = error(syntax)
@@ -380,15 +380,21 @@ py_token([C|Cs], Token, Rest) :-
     ),
     !,
     py_number([C|Cs], Token, Rest).
+py_token([U, Q|Cs], Token, Rest) :-
+    memberchk(U, `uU`),
+    memberchk(Q, `"'`),
+    !,
+    py_token([Q|Cs], Token, Rest).
 py_token([C|Cs], name(Name), Rest) :-
     py_name_start(C),
     !,
     py_name_chars(Cs, More, Rest),
     atom_codes(Name, [C|More]),
     (   Rest = [Q|_],
-        memberchk(Q, `"'`)
-    ->  downcase_atom(Name, Lower),
-        (   memberchk(Lower, [r, u, b, f, br, rb, fr, rf])
+        memberchk(Q, `"'`),
+        downcase_atom(Name, Lower),
+        Lower \== u                          % u"..." is "..."
+    ->  (   memberchk(Lower, [r, b, f, br, rb, fr, rf])
         ->  throw(python(unsupported(string_prefix(Name))))
         ;   throw(python(error(syntax)))
         )
@@ -398,8 +404,11 @@ py_token([C|Cs], punct(C), Cs) :-
     memberchk(C, `[]{},:+-`),
     !.
 py_token([C|_], _, _) :-
-    char_code(Char, C),
-    throw(python(unsupported(character(Char)))).
+    (   memberchk(C, `()[]{}:;.,@=+-*/%&|^~<>!`)
+    ->  char_code(Char, C),
+        throw(python(unsupported(operator(Char))))
+    ;   throw(python(error(syntax)))        % `\`, `$`, `?`, an emoji ...
+    ).
 
 py_name_start(C) :-
     code_type(C, csymf).
@@ -536,7 +545,9 @@ py_number(Codes, num(Text, N), Rest) :-
         ->  append(Normal, `e`, Normal0)
         ;   Normal = Normal0
         ),
-        number_codes(N, Normal)
+        catch(number_codes(N, Normal),
+              error(syntax_error(float_overflow), _),
+              N = inf)                      % Python's float('inf')
     ;   Int = [0'0, _|_],
         \+ maplist(==(0'0), Int)
     ->  throw(python(error(syntax)))    % leading zeros
@@ -548,7 +559,9 @@ number_end([C|_]) :-
     ;   C == 0'.
     ),
     !,
-    (   memberchk(C, `jJ_`)
+    (   C == 0'.
+    ->  throw(python(unsupported(operator('.'))))
+    ;   memberchk(C, `jJ_`)
     ->  throw(python(unsupported(number_form)))
     ;   throw(python(error(syntax)))
     ).
@@ -568,8 +581,26 @@ base_digit(Base, C, V) :-
 base_add(Base, V, Acc0, Acc) :-
     Acc is Acc0*Base + V.
 
-%   Grammar: expr := unary (('+'|'-') unary)*;
+%   Grammar: top := expr | expr (',' expr)* [','] (a tuple);
+%   expr := unary (('+'|'-') unary)*;
 %   unary := ('+'|'-') unary | atom.
+
+py_top(Tree) -->
+    py_expr(First),
+    (   [punct(0',)]
+    ->  py_tuple_rest(Rest),
+        { Tree = tuple([First|Rest]) }
+    ;   { Tree = First }
+    ).
+
+py_tuple_rest([]) -->
+    [].
+py_tuple_rest([H|T]) -->
+    py_expr(H),
+    (   [punct(0',)]
+    ->  py_tuple_rest(T)
+    ;   { T = [] }
+    ).
 
 py_expr(Tree) -->
     py_unary(T0),
@@ -607,7 +638,11 @@ py_atom(num(Text, N)) -->
     !.
 py_atom(name(N)) -->
     [name(N)],
-    !.
+    !,
+    (   [punct(0'[)]
+    ->  { throw(python(unsupported(subscript))) }
+    ;   []
+    ).
 py_atom(list(Items)) -->
     [punct(0'[)],
     !,
@@ -674,6 +709,8 @@ py_eval(name(Name), Value) :-
     ).
 py_eval(list(Items), list(Values)) :-
     maplist(py_eval, Items, Values).
+py_eval(tuple(Items), tuple(Values)) :-
+    maplist(py_eval, Items, Values).
 py_eval(set(Items), set(Values)) :-
     maplist(py_eval, Items, Values0),
     maplist(py_hashable, Values0),
@@ -702,16 +739,17 @@ py_constant('None', none).
 py_arith(Op, A, B, num(Text, N)) :-
     (   py_number_value(A, NA),
         (   Op == neg
-        ->  N is -NA
+        ->  Expr = -NA
         ;   Op == pos
-        ->  N = NA
+        ->  Expr = NA
         ;   py_number_value(B, NB),
             (   Op == (+)
-            ->  N is NA + NB
-            ;   N is NA - NB
+            ->  Expr = NA + NB
+            ;   Expr = NA - NB
             )
         )
-    ->  format(string(Text), "~w", [N])
+    ->  catch(N is Expr, error(evaluation_error(_), _), N = inf),
+        format(string(Text), "~w", [N])
     ;   Op == (+),
         A = str(SA),
         B = str(SB)

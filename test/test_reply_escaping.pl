@@ -291,6 +291,19 @@ test(find_label, Bad == []) :-
               \+ read_list([Label], Line)
             ),
             Bad).
+test(resource_details, Bad == []) :-  % JSON, but liboro tokenises it
+    findall(Label,
+            ( labelled(_, Label, Id),
+              Label \== "",
+              test_ok(getResourceDetails, [Id], Line),
+              element_text(Label, Text),
+              \+ ( \+ reply_line_problem(ok, Line, _),
+                   liboro_read_line(Line, value(map(_))),
+                   pyoro_read_line(Line, value(dict(Pairs))),
+                   memberchk(str("name")-str(Text), Pairs)
+                 )
+            ),
+            Bad).
 test(direct_instances, true(Got == Expected)) :-
     test_ok(getDirectInstancesOf, ['EscCup'], Line),
     \+ reply_line_problem(ok, Line, _),
