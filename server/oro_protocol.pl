@@ -991,7 +991,8 @@ must_be_text(Text, String) :-
 %     - string(Text)          a quoted string, see "Plain strings" below
 %     - multiline_string(Text) `"Text"` with `\` and `"` escaped and
 %                             newlines kept raw (only for `help`)
-%     - raw(Text)             Text as is (UUIDs, JSON)
+%     - raw(Text)             Text as is (UUIDs, JSON), but a line
+%                             break (`\r\n`, `\r`, `\n`) is a space
 %     - null                  `null`
 %     - int(N), float(X)      the number (`Infinity`, `NaN` as Java)
 %     - list(Values)          `[v1,v2]`, no spaces
@@ -1000,8 +1001,8 @@ must_be_text(Text, String) :-
 %
 %   Elements of lists and maps (keys included) are value terms, plain
 %   strings and atoms (encoded as strings; `true` and `false` too, use
-%   bool/1 for booleans), plain numbers, or the atom `null`.  `void` is
-%   not an element.
+%   bool/1 for booleans), plain numbers, or the atom `null`.  `void` and
+%   multiline_string/1 are not elements.
 %
 %   The escaping is chosen so that the two real clients read every
 %   value back: liboro, which strips one pair of quotes from a value
@@ -1078,8 +1079,12 @@ scalar(bool(B), [B|T], T) :-
     ;   B == false
     ),
     !.
-scalar(raw(Text), [String|T], T) :-
-    text_string(Text, String).
+scalar(raw(Text), [Line|T], T) :-
+    text_string(Text, String),
+    (   split_string(String, "\n\r", "", [_])
+    ->  Line = String
+    ;   replace_all(String, ["\r\n"-" ", "\r"-" ", "\n"-" "], Line)
+    ).
 scalar(int(N), [N|T], T) :-
     integer(N).
 scalar(float(X), [Text|T], T) :-

@@ -186,6 +186,8 @@ test(event_content, Bad == []) :-
                  )
             ),
             Bad).
+test(raw_one_line, Line == "{\"a\": 1, \"b\":  2 }") :-
+    oro_encode_value(raw("{\"a\":\n1, \"b\":\r\n 2\r}"), Line).
 test(random_texts, Bad == []) :-
     set_random(seed(35)),
     numlist(1, 1500, Is),
