@@ -75,6 +75,13 @@ main :-
     row('encode a list of 500 strings, per element', 100,
         oro_encode_value(list(Answers), _),
         oro_protocol:elements(Answers, _, []), 500),
+    labels(500, Labels),
+    row('encode 500 escaped labels, per element', 100,
+        oro_encode_value(list(Labels), _), -, 500),
+    row('encode a plain string reply', 20000,
+        oro_encode_value(string("baboon monkey"), _), -),
+    row('encode a string reply with quotes', 20000,
+        oro_encode_value(string("say \"hi\""), _), -),
     requests(Requests),
     forall(member(Kind-Request-N, Requests),
            ( format(atom(Name), 'read a request, ~w', [Kind]),
@@ -153,6 +160,10 @@ code_by_code_elements(Inner) :-
 answers(N, Answers) :-
     numlist(1, N, Is),
     maplist([I, string(A)]>>format(atom(A), "obj~d", [I]), Is, Answers).
+
+labels(N, Labels) :-
+    numlist(1, N, Is),
+    maplist([I, L]>>format(string(L), "cup\t~d \"blue\"", [I]), Is, Labels).
 
 %   Requests as the bytes a client sends, and how many of them each
 %   input holds.

@@ -642,9 +642,11 @@ resource_json(R, JSON) :-
     ),
     json_string(Name, JSON).
 
+%   json_string(+Text, -JSON): a JSON string, escaped as the strings of
+%   every reply (oro_encode_string/2): no escape liboro cannot read.
+
 json_string(Text, JSON) :-
-    atom_string(Text, String),              % a string: never true/false/null
-    with_output_to(string(JSON), json_write(current_output, String)).
+    oro_encode_string(Text, JSON).
 
 		 /*******************************
 		 *           TAXONOMY           *

@@ -7,7 +7,8 @@
             oro_write_error/3,          % +Out, +ExceptionName, +Message
             oro_write_event/3,          % +Out, +WatcherId, +Content
             oro_write_closing/1,        % +Out
-            oro_encode_value/2          % +Value, -String
+            oro_encode_value/2,         % +Value, -String
+            oro_encode_string/2         % +Text, -Quoted
           ]).
 :- use_module(library(error)).
 :- use_module(library(option)).
@@ -100,10 +101,13 @@ threads on the same stream: the caller must hold the connection's
 mutex around every writer call so messages never interleave.  The
 output stream must be set to `encoding(utf8)` by the caller.
 
-Values (§3) are encoded by oro_encode_value/2 with the spec's
-recommended deviation: `"` and `\` inside returned strings are escaped,
-and so are newlines and carriage returns (`\n`, `\r`), keeping every
-value on one line.  multiline_string/1 exists for `help`, whose text
+Values (§3) are encoded by oro_encode_value/2, which defines the
+escaping once for replies and events: no value line holds a raw line
+break (so none can read as `#end#`), and both real clients (liboro's
+Boost tokeniser, pyoro's eval()) read every list and map element back;
+plain string replies read as oro-server 0.8.2's did.  The rules, and
+the two characters no escape can carry to both clients (CR and NUL),
+are documented there.  multiline_string/1 exists for `help`, whose text
 keeps its raw newlines.
 */
 
@@ -1085,11 +1089,11 @@ must_be_text(Text, String) :-
 %
 %     - void                  the empty string (void methods)
 %     - bool(true|false)      `true` / `false`
-%     - string(Text)          `"Text"` with `\` `"` newline and carriage
-%                             return escaped as `\\` `\"` `\n` `\r`
-%     - multiline_string(Text) like string/1, but newlines are kept
-%                             raw (only for `help`)
-%     - raw(Text)             Text as is (UUIDs, JSON)
+%     - string(Text)          a quoted string, see "Plain strings" below
+%     - multiline_string(Text) `"Text"` with `\` and `"` escaped and
+%                             newlines kept raw (only for `help`)
+%     - raw(Text)             Text as is (UUIDs, JSON), but a line
+%                             break (`\r\n`, `\r`, `\n`) is a space
 %     - null                  `null`
 %     - int(N), float(X)      the number (`Infinity`, `NaN` as Java)
 %     - list(Values)          `[v1,v2]`, no spaces
@@ -1098,8 +1102,40 @@ must_be_text(Text, String) :-
 %
 %   Elements of lists and maps (keys included) are value terms, plain
 %   strings and atoms (encoded as strings; `true` and `false` too, use
-%   bool/1 for booleans), plain numbers, or the atom `null`.  `void` is
-%   not an element.
+%   bool/1 for booleans), plain numbers, or the atom `null`.  `void` and
+%   multiline_string/1 are not elements.
+%
+%   The escaping is chosen so that the two real clients read every
+%   value back: liboro, which strips one pair of quotes from a value
+%   line and cuts lists and maps with Boost's `escaped_list_separator`
+%   (escapes `\\`, `\"`, `\,` and `\n` only: any other escape throws
+%   and aborts the client), and pyoro, which eval()s the line as a
+%   Python literal.  No value line contains a raw line break (`\n` or
+%   `\r`), so none can read as `#end#`.
+%
+%     - **Strings inside lists and maps** are quoted with `"`; `\` and
+%       `"` are written `\\` and `\"`, a line break (`\n`, `\r\n` or a
+%       lone `\r`) is written `\n`, NUL becomes U+FFFD, every other
+%       character (TAB, other control characters, commas, brackets,
+%       non-BMP characters) is written raw.  Both clients read these
+%       escapes alike and read raw characters as themselves.  CR and
+%       NUL have no representation both can read: `\r` or `\u0000`
+%       would abort liboro, a raw CR is a line break for pyoro (its
+%       socket file reads with universal newlines) and a raw NUL ends
+%       liboro's C string; so a CR reads back as a newline, as the
+%       request reader reads it, and a NUL as U+FFFD.
+%     - **Plain strings** (a string(Text) reply: `getLabel`, `hello`)
+%       are not cut by liboro, which shows what lies between the quotes
+%       as is, like oro-server 0.8.2 wrote it.  So Text is written
+%       verbatim between `"` (or between `'` if it has a `"` but no
+%       `'`; both clients strip either quote and Python reads both),
+%       unless it contains a line break or NUL (that would break the
+%       framing) or both quote characters (that could close pyoro's
+%       literal early and have it eval the rest of the label as
+%       code).  Then it is written `"` + Text + `"` with `\\`, `\"`,
+%       `\n`, `\r` and `\u0000`: pyoro reads it exactly, liboro shows
+%       the escapes.  A backslash in a verbatim string is read as an
+%       escape by pyoro, as it was from oro-server 0.8.2.
 %
 %   @error type_error(oro_value, Value) for anything else.
 
@@ -1111,39 +1147,50 @@ oro_encode_value(Value, String) :-
 oro_encode_value(Value, _) :-
     type_error(oro_value, Value).
 
-value(void, T, T).
-value(null, ["null"|T], T).
-value(bool(B), [B|T], T) :-
-    (   B == true
-    ;   B == false
-    ),
-    !.
-value(string(Text), ["\"", Escaped, "\""|T], T) :-
+value(string(Text), [Quote, Escaped, Quote|T], T) :-
+    !,
     text_string(Text, String),
-    escape_string(String, Escaped).
+    reply_string(String, Quote, Escaped).
 value(multiline_string(Text), ["\"", Escaped, "\""|T], T) :-
+    !,
     text_string(Text, String),
-    escape_quotes(String, Escaped).
-value(raw(Text), [String|T], T) :-
-    text_string(Text, String).
-value(int(N), [N|T], T) :-
-    integer(N).
-value(float(X), [Text|T], T) :-
-    number(X),
-    float_text(X, Text).
+    replace_all(String, [ "\\"-"\\\\", "\""-"\\\"" ], Escaped).
 value(list(Values), ["[\"", Joined, "\"]"|T], T) :-
     Values = [_|_],
     plain_elements(Values, Texts),          % the usual case: strings
     atomic_list_concat(Texts, ",", All),
-    plain_string(All),                      % one scan for the list
+    plain_element(All),                     % one scan for the list
     !,
     atomic_list_concat(Texts, "\",\"", Joined).
 value(list(Values), ["["|T0], T) :-
+    !,
     is_list(Values),
     elements(Values, T0, ["]"|T]).
 value(map(Pairs), ["{"|T0], T) :-
+    !,
     is_list(Pairs),
     pairs(Pairs, T0, ["}"|T]).
+value(Value, T0, T) :-
+    scalar(Value, T0, T).
+
+scalar(void, T, T).
+scalar(null, ["null"|T], T).
+scalar(bool(B), [B|T], T) :-
+    (   B == true
+    ;   B == false
+    ),
+    !.
+scalar(raw(Text), [Line|T], T) :-
+    text_string(Text, String),
+    (   split_string(String, "\n\r", "", [_])
+    ->  Line = String
+    ;   replace_all(String, ["\r\n"-" ", "\r"-" ", "\n"-" "], Line)
+    ).
+scalar(int(N), [N|T], T) :-
+    integer(N).
+scalar(float(X), [Text|T], T) :-
+    number(X),
+    float_text(X, Text).
 
 elements([], T, T).
 elements([H|R], T0, T) :-
@@ -1173,25 +1220,51 @@ element(E, T0, T) :-
     (   var(E)
     ->  fail
     ;   string(E)
-    ->  value(string(E), T0, T)
+    ->  element_string(E, T0, T)
     ;   integer(E)
-    ->  value(int(E), T0, T)
+    ->  scalar(int(E), T0, T)
     ;   float(E)
-    ->  value(float(E), T0, T)
+    ->  scalar(float(E), T0, T)
     ;   E == null
-    ->  value(null, T0, T)
+    ->  scalar(null, T0, T)
     ;   atom(E)
-    ->  value(string(E), T0, T)
+    ->  element_string(E, T0, T)
+    ;   E = string(Text)
+    ->  element_string(Text, T0, T)
     ;   E \= void,
+        E \= multiline_string(_),
         value(E, T0, T)
+    ).
+
+%!  oro_encode_string(+Text, -Quoted) is det.
+%
+%   Quoted is Text as a string inside a list or a map of a value line
+%   (see oro_encode_value/2), for replies that build their text
+%   themselves, such as the JSON of `getResourceDetails`: liboro
+%   tokenises every reply that looks like a map, so a JSON escape such
+%   as `\t` there would abort it.
+%
+%   @error type_error(text, Text) if Text is not text.
+
+oro_encode_string(Text, Quoted) :-
+    must_be_text(Text, String),
+    element_string(String, Parts, []),
+    atomics_to_string(Parts, Quoted).
+
+element_string(Text, ["\"", Escaped, "\""|T], T) :-
+    text_string(Text, String),
+    (   plain_element(String)
+    ->  Escaped = String
+    ;   element_escapes(Escapes),
+        replace_all(String, Escapes, Escaped)
     ).
 
 %   plain_elements(+Values, -Texts) is semidet.
 %
 %   Values are list elements that are all encoded as strings (string(T)
 %   with T an atom or a string, a string, an atom but `null`); Texts are
-%   their texts.  If none of them needs escaping (plain_string/1 on all
-%   of them at once), the list is `["` + their join by `","` + `"]`.
+%   their texts.  If none of them needs escaping (plain_element/1 on
+%   all of them at once), the list is `["` + their join by `","` + `"]`.
 
 plain_elements([], []).
 plain_elements([Value|Values], [Text|Texts]) :-
@@ -1233,61 +1306,55 @@ float_text(X, Text) :-
     ;   format(string(Text), "~w", [Y])
     ).
 
-%   escape_string(+String, -Escaped)
-%   escape_quotes(+String, -Escaped)
+%   element_escapes(-Replacements)
 %
-%   Escape for the value line.
+%   The escapes of a string inside a list or a map: only those Boost's
+%   escaped_list_separator and Python read alike (`\\`, `\"`, `\n`);
+%   CR and NUL have none (see oro_encode_value/2).
 
-escape_string(String, Escaped) :-
-    plain_string(String),                   % the usual case: one scan
-    !,
-    Escaped = String.
-escape_string(String, Escaped) :-
-    replace_all(String,
-                [ "\\"-"\\\\", "\""-"\\\"", "\n"-"\\n", "\r"-"\\r",
-                  "\t"-"\\t" ],
-                Escaped0),
-    escape_controls(Escaped0, Escaped).
+element_escapes([ "\\"-"\\\\", "\""-"\\\"",
+                  "\r\n"-"\\n", "\r"-"\\n", "\n"-"\\n",
+                  "\u0000"-"\uFFFD"
+                ]).
 
-%   Other control characters (NUL included) become \uXXXX, so every
-%   value stays valid JSON and a valid Python literal.  One C-level scan
-%   finds out whether there is any.
+%   plain_element(+String): String is written as is inside a list or a
+%   map (no `\`, `"`, line break or NUL).  One C-level scan.
 
-escape_controls(String, Escaped) :-
-    (   has_control(String)
-    ->  string_codes(String, Codes),
-        foldl(control_code, Codes, Parts, []),
-        atomics_to_string(Parts, Escaped)
-    ;   Escaped = String
-    ).
-
-has_control(String) :-
-    controls(Controls),
-    (   split_string(String, Controls, "", [_, _|_])
-    ->  true
-    ;   sub_string(String, _, _, _, "\u0000")
-    ->  true
-    ).
-
-controls("\x1\\x2\\x3\\x4\\x5\\x6\\x7\\x8\\x9\\xa\\xb\\xc\\xd\\xe\\xf\\x10\\x11\\x12\\x13\\x14\\x15\\x16\\x17\\x18\\x19\\x1a\\x1b\\x1c\\x1d\\x1e\\x1f\").                  % the codes 1-31
-
-%   plain_string(+String): nothing in String needs escaping.
-
-plain_string(String) :-
-    specials(Specials),
-    split_string(String, Specials, "", [_]),
+plain_element(String) :-
+    split_string(String, "\\\"\n\r", "", [_]),
     \+ sub_string(String, _, _, _, "\u0000").
 
-specials("\\\"\x1\\x2\\x3\\x4\\x5\\x6\\x7\\x8\\x9\\xa\\xb\\xc\\xd\\xe\\xf\\x10\\x11\\x12\\x13\\x14\\x15\\x16\\x17\\x18\\x19\\x1a\\x1b\\x1c\\x1d\\x1e\\x1f\").                  % \\, " and the codes 1-31
+%   reply_string(+String, -Quote, -Text)
+%
+%   A plain string reply is Quote + Text + Quote: String verbatim when
+%   that is safe, else escaped for Python (see oro_encode_value/2).
 
-control_code(Code, [Part|T], T) :-
-    (   Code < 32
-    ->  format(string(Part), "\\u~|~`0t~16r~4+", [Code])
-    ;   char_code(Part, Code)
+reply_string(String, Quote, Text) :-
+    split_string(String, "\n\r\"", "", [_]),   % the usual case: one scan
+    \+ sub_string(String, _, _, _, "\u0000"),
+    !,
+    Quote = "\"",
+    Text = String.
+reply_string(String, Quote, Text) :-
+    (   split_string(String, "\n\r", "", [_]),
+        \+ sub_string(String, _, _, _, "\u0000"),
+        verbatim_quote(String, Quote0)
+    ->  Quote = Quote0,
+        Text = String
+    ;   Quote = "\"",
+        replace_all(String,
+                    [ "\\"-"\\\\", "\""-"\\\"", "\n"-"\\n", "\r"-"\\r",
+                      "\u0000"-"\\u0000"
+                    ],
+                    Text)
     ).
 
-escape_quotes(String, Escaped) :-
-    replace_all(String, [ "\\"-"\\\\", "\""-"\\\"" ], Escaped).
+verbatim_quote(String, Quote) :-
+    (   sub_string(String, _, _, _, "\"")
+    ->  \+ sub_string(String, _, _, _, "'"),
+        Quote = "'"
+    ;   Quote = "\""
+    ).
 
 %!  replace_all(+String, +Replacements, -Result) is det.
 %

@@ -19,6 +19,7 @@
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(debug)).
+:- use_module(oro_client_parsers).
 
 /** <module> A small ORO client for protocol tests
 
@@ -43,6 +44,10 @@ Messages are
   - end_of_file            the server closed the connection
   - timeout                nothing complete arrived in time
   - unexpected(Line)       a line that starts no known message
+
+Every value line received is checked against the rules by which liboro
+and pyoro read it (oro_client_parsers.pl): a line either client would
+fail on raises error(oro_client_read(Problem, Line), _).
 */
 
 default_timeout(10).
@@ -296,7 +301,32 @@ deadline(Timeout, Deadline) :-
 read_message(oro_conn(In, _, _, _), Deadline, Message) :-
     catch(read_message_(In, Deadline, Message), Error,
           read_error(Error, Message)),
-    debug(oro(test_client), 'received ~q', [Message]).
+    debug(oro(test_client), 'received ~q', [Message]),
+    check_clients_read(Message).
+
+%   check_clients_read(+Message)
+%
+%   Every value line the server sends must be read back by both real
+%   clients (test/oro_client_parsers.pl): the value of a one-line `ok`
+%   (the multi-line `help` text is for people) and the content of an
+%   event.  A line either client would fail on makes the test fail.
+
+check_clients_read(ok(Value)) :-
+    !,
+    (   sub_string(Value, _, _, _, "\n")
+    ->  true
+    ;   check_line(ok, Value)
+    ).
+check_clients_read(event(_, Content)) :-
+    !,
+    check_line(event, Content).
+check_clients_read(_).
+
+check_line(Kind, Line) :-
+    (   reply_line_problem(Kind, Line, Problem)
+    ->  throw(error(oro_client_read(Problem, Line), _))
+    ;   true
+    ).
 
 read_error(error(timeout_error(_, _), _), timeout) :- !.
 read_error(error(io_error(_, _), _), end_of_file) :- !.

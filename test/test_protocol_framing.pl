@@ -154,15 +154,19 @@ test(string, S == "\"toto\"") :-
     oro_encode_value(string("toto"), S).
 test(string_atom, S == "\"toto\"") :-
     oro_encode_value(string(toto), S).
-test(string_quotes_escaped, S == "\"toto et \\\"tata\\\"\"") :-
+test(string_quotes_single_quoted, S == "'toto et \"tata\"'") :-
     oro_encode_value(string("toto et \"tata\""), S).
-test(string_backslash_escaped, S == "\"a\\\\b\"") :-
+test(string_both_quotes_escaped, S == "\"it's \\\"x\\\"\"") :-
+    oro_encode_value(string("it's \"x\""), S).
+test(string_backslash_verbatim, S == "\"a\\b\"") :-
     oro_encode_value(string("a\\b"), S).
+test(string_backslash_escaped_with_newline, S == "\"a\\\\b\\nc\"") :-
+    oro_encode_value(string("a\\b\nc"), S).
 test(string_newlines_escaped, S == "\"a\\nb\\rc\"") :-
     oro_encode_value(string("a\nb\rc"), S).
 test(string_nul_escaped, S == "\"a\\u0000b\"") :-
     oro_encode_value(string("a\u0000b"), S).
-test(string_controls_escaped, S == "\"a\\tb\\u001fc\"") :-
+test(string_controls_raw, S == "\"a\tb\u001fc\"") :-
     oro_encode_value(string("a\tb\u001fc"), S).
 test(string_unicode, S == "\"日本 😀\"") :-
     oro_encode_value(string("日本 😀"), S).
