@@ -3,6 +3,7 @@
             oro_server_stop/1,          % +Server
             oro_server_shutdown/1,      % +Server
             oro_server_port/2,          % +Server, -Port
+            oro_server_http_port/2,     % +Server, -Port
             oro_server_connections/2    % +Server, -Count
           ]).
 :- use_module(library(socket)).
@@ -20,6 +21,7 @@
 :- use_module(oro_methods_categorization).
 :- use_module(oro_methods_explain).
 :- use_module(oro_plugins).
+:- use_module('../prolog/oro/oro_http').
 
 /** <module> The ORO socket server
 
@@ -85,6 +87,10 @@ opt_type(save_dir, save_dir, file(exist)).
 opt_type(plugin, plugin, atom).               % reported by oro_plugins, not fatal
 opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
+opt_type(http, http, between(0, 65535)).
+opt_type(no_http, http, boolean(false)).
+opt_type(http_host, http_host, atom).
+opt_type(http_changes, http_changes, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -108,6 +114,11 @@ Options:
                      more than after the last rebuild, or twice as many,
                      to give back the memory of names no fact uses any
                      more (default 1000000; 0: never)
+  --http=PORT        Serve SPARQL and Pengines over HTTP on PORT
+                     (default 6970; 0 picks a free one)
+  --no-http          No HTTP side
+  --http-host=ADDR   Address of the HTTP side (default 127.0.0.1)
+  --http-changes     Let Pengines clients change the store (default: no)
   -h, --help         Show this help
 ").
 
@@ -130,7 +141,11 @@ main :-
                [Positional]),
         halt(1)
     ),
-    catch(oro_server_start(Options, Server), E,
+    (   option(http(_), Options)
+    ->  Options1 = Options
+    ;   Options1 = [http(6970)|Options]
+    ),
+    catch(oro_server_start(Options1, Server), E,
           ( print_message(error, E),
             halt(1)
           )),
@@ -146,6 +161,11 @@ main :-
     on_signal(int, _, shutdown_signal),
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
+    (   oro_server_http_port(Server, HttpPort)
+    ->  option(http_host(HttpHost), Options, '127.0.0.1'),
+        format("oro web listening on http://~w:~w/~n", [HttpHost, HttpPort])
+    ;   true
+    ),
     flush_output,
     load_sparql_engine,
     thread_get_message(oro_server_stop),
@@ -247,8 +267,10 @@ loopback(Host) :-
 %   save_dir(Dir), plugin(File) (repeatable: see oro_plugins; a
 %   plugin that cannot be loaded is reported and skipped), db(Dir) (see
 %   oro_init/1), rebuild_garbage(N) (default 1,000,000: see
-%   oro_store_rebuild/0; every request runs in oro_store_read/1).
-%   Server is an opaque handle.
+%   oro_store_rebuild/0; every request runs in oro_store_read/1),
+%   http(Port) (default `false`: no HTTP side; 0 picks a free port:
+%   see oro_http_start/2), http_host(Host) (default '127.0.0.1'),
+%   http_changes(Bool) (default `false`).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -287,14 +309,40 @@ oro_server_start(Options, Server) :-
         tcp_bind(Socket, Host:Port)
     ),
     tcp_listen(Socket, 64),
+    catch(start_http(Options, Http), E,
+          ( tcp_close_socket(Socket),
+            throw(E)
+          )),
     get_time(Started),
     message_queue_create(Control),
     message_queue_create(Jobs),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
-                        started:Started, accept:Accept, control:Control},
+                        started:Started, accept:Accept, control:Control,
+                        http:Http},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
+
+%   start_http(+Options, -Http): the HTTP side, or `none`.
+
+start_http(Options, Http) :-
+    option(http(HttpPort), Options, false),
+    (   HttpPort == false
+    ->  Http = none
+    ;   option(http_host(HttpHost), Options, '127.0.0.1'),
+        option(http_changes(Changes), Options, false),
+        oro_http_start([port(HttpPort), host(HttpHost), changes(Changes)],
+                       Http)
+    ).
+
+%!  oro_server_http_port(+Server, -Port) is semidet.
+%
+%   The port of the HTTP side of Server; fails if it has none.
+
+oro_server_http_port(Server, Port) :-
+    Http = Server.http,
+    Http \== none,
+    oro_http_port(Http, Port).
 
 %!  oro_server_port(+Server, -Port) is det.
 %
@@ -325,6 +373,10 @@ oro_server_connections(Server, Count) :-
 %   could land inside a handler and be taken for an error.
 
 oro_server_stop(Server) :-
+    (   Server.http == none
+    ->  true
+    ;   catch(oro_http_stop(Server.http), _, true)
+    ),
     thread_send_message(Server.control, stop),
     wake_acceptor(Server),
     thread_join(Server.accept, _),

@@ -21,6 +21,7 @@
             test_server_stop_synced/0,
             test_server_wait_idle/0,
             test_server_port/1,         % -Port
+            test_server_http_port/1,    % -Port
             test_server_connections/1,  % -Count
             test_connected/2,           % -Conn, :Goal
             test_call/3,                % +Method, +Params, ?Reply
@@ -383,6 +384,16 @@ test_server_port(Port) :-
     !,
     oro_server_port(Server, Port).
 
+%!  test_server_http_port(-Port) is semidet.
+%
+%   Port is the port of the HTTP side of the unit's server; fails if
+%   none runs.
+
+test_server_http_port(Port) :-
+    test_server(Server),
+    !,
+    oro_server_http_port(Server, Port).
+
 %!  test_server_connections(-Count) is semidet.
 %
 %   Count is the number of connections the unit's server is serving
@@ -572,7 +583,7 @@ test_cli_server(Args, Port, Goal, Stderr) :-
     test_checkout_path('server/oro_server.pl', Server),
     test_checkout_path('.', Checkout),
     setup_call_cleanup(
-        process_create(path(timeout), ['60', swipl, Server, '--port=0'|Args],
+        process_create(path(timeout), ['60', swipl, Server, '--port=0', '--http=0'|Args],
                        [ stdout(pipe(Out)), stderr(pipe(Err)),
                          cwd(Checkout), process(Pid)
                        ]),

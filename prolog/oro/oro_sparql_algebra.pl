@@ -393,6 +393,8 @@ memo(Key, ctx(_, _, _, Cache), Value, Goal) :-
 
 %   cached_cost(+Key, +Ctx, -Cost): estimates that depend on the
 %   schema (sub-properties, sub-classes), computed once per query.
+%   Only a model (an atom) has a schema closure: asserted(Model) and
+%   graphs(Graphs) are estimated by their triples alone.
 
 cached_cost(Key, ctx(Model, _, _, Cache), Cost) :-
     arg(1, Cache, Assoc),
@@ -406,7 +408,8 @@ cached_cost(Key, ctx(Model, _, _, Cache), Cost) :-
 estimate(predicate(P), Model, N) :-
     aggregate_all(sum(N0),
                   ( (   Sub = P
-                    ;   oro_subproperty(Model, Sub, P),
+                    ;   atom(Model),
+                        oro_subproperty(Model, Sub, P),
                         Sub \== P
                     ),
                     rdf_estimate_complexity(_, Sub, _, N0)
@@ -415,7 +418,8 @@ estimate(predicate(P), Model, N) :-
 estimate(fan_out(P), Model, F) :-
     aggregate_all(sum(F0),
                   ( (   Sub = P
-                    ;   oro_subproperty(Model, Sub, P),
+                    ;   atom(Model),
+                        oro_subproperty(Model, Sub, P),
                         Sub \== P
                     ),
                     rdf_current_predicate(Sub),
@@ -425,7 +429,8 @@ estimate(fan_out(P), Model, F) :-
 estimate(fan_in(P), Model, F) :-
     aggregate_all(sum(F0),
                   ( (   Sub = P
-                    ;   oro_subproperty(Model, Sub, P),
+                    ;   atom(Model),
+                        oro_subproperty(Model, Sub, P),
                         Sub \== P
                     ),
                     rdf_current_predicate(Sub),
@@ -438,7 +443,8 @@ estimate(type(C), Model, N) :-
     ->  rdf_estimate_complexity(_, Type, _, N)
     ;   aggregate_all(sum(N0),
                       ( (   Sub = C
-                        ;   oro_subclass(Model, Sub, C),
+                        ;   atom(Model),
+                            oro_subclass(Model, Sub, C),
                             Sub \== C
                         ),
                         rdf_estimate_complexity(_, Type, Sub, N0)

@@ -10,6 +10,10 @@
 :- use_module(oro_sparql_grammar, [parse_text/3, sparql_error/3, conjunction/2]).
 :- use_module(oro_sparql_eval, [run_query/3]).
 :- use_module(oro_sparql_json, [result_json/2]).
+:- use_module(oro_sparql_xml, [result_xml/2]).
+:- use_module(oro_sparql_csv, [result_csv/2]).
+:- use_module(oro_sparql_tsv, [result_tsv/2]).
+:- use_module(library(option), [option/3]).
 
 /** <module> SPARQL 1.1 queries over the inference closure of a model
 
@@ -129,6 +133,57 @@ oro_sparql(Model0, Text, Result) :-
     oro_with_time_limit(( oro_sparql_parse(Text, Query),
                           run_query(Model, Query, Result)
                         )).
+
+%!  oro_sparql(+Model, +Text, -Result, +Options) is det.
+%
+%   Called by oro_sparql:oro_sparql/4, which documents it.
+
+oro_sparql(Model0, Text, Result, Options) :-
+    oro_resolve_model(Model0, Model),
+    must_be(list, Options),
+    option(infer(Infer), Options, true),
+    must_be(boolean, Infer),
+    findall(G, member(default_graph(G), Options), Defaults),
+    maplist(must_be(atom), Defaults),
+    (   Defaults \== []
+    ->  maplist(iri_graphs, Defaults, Graphss),
+        append(Graphss, Graphs0),
+        sort(Graphs0, Graphs),
+        Source = graphs(Graphs)
+    ;   Infer == true
+    ->  Source = Model
+    ;   Source = asserted(Model)
+    ),
+    oro_with_time_limit(( oro_sparql_parse(Text, Query),
+                          run_query(Source, Query, Result)
+                        )).
+
+iri_graphs(IRI, Graphs) :-
+    findall(G, oro_sparql_graph(IRI, G), Graphs).
+
+%!  oro_sparql_graph(?IRI, ?Graph) is nondet.
+%
+%   Called by oro_sparql:oro_sparql_graph/2, which documents it.
+
+oro_sparql_graph(IRI, Graph) :-
+    (   oro_graph_layer(Graph, _, profile(_)),
+        IRI = Graph
+    ;   oro_ontology_graph(Graph),
+        rdf_graph_property(Graph, source(IRI))
+    ).
+
+%!  oro_sparql_result_text(+Format, +Result, -Text) is det.
+%
+%   Called by oro_sparql:oro_sparql_result_text/3, which documents it.
+
+oro_sparql_result_text(json, Result, Text) :-
+    result_json(Result, Text).
+oro_sparql_result_text(xml, Result, Text) :-
+    result_xml(Result, Text).
+oro_sparql_result_text(csv, Result, Text) :-
+    result_csv(Result, Text).
+oro_sparql_result_text(tsv, Result, Text) :-
+    result_tsv(Result, Text).
 
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %

@@ -1,5 +1,5 @@
 :- module(oro_sparql_eval,
-          [ run_query/3,                % +Model, +Query, -Result
+          [ run_query/3,                % +Source, +Query, -Result
             eval/4,                     % +Pattern, +Ctx, +Mu0, -Mu
             lookup/4,                   % +Name, +Mu, +Ctx, -Value
             term_order/3                % +A, +B, -Order
@@ -11,6 +11,8 @@
 :- use_module(library(ordsets)).
 :- use_module(library(assoc)).
 :- use_module(oro_reason).
+:- use_module(oro_store, [oro_asserted/4]).
+:- use_module(library(solution_sequences), [distinct/2]).
 :- use_module(oro_sparql_algebra, [annotate_query/2, plan_goals/5, memo/4]).
 :- use_module(oro_sparql_functions, [eval_expr/4, expr_true/3, order_class/3, value_class/2]).
 
@@ -28,20 +30,24 @@ LIMIT) apply in the order of the specification.
 		 *         QUERY RUNNER         *
 		 *******************************/
 
-%   The evaluation context: ctx(Model, Subst, Group, Cache), Subst the
+%   The evaluation context: ctx(Source, Subst, Group, Cache), Source
+%   the default graph (see source_triple/4), Subst the
 %   bindings EXISTS substitutes (Name-Value, sorted), Group the member
 %   solutions of the current group (or `none`), Cache a mutable
 %   cache(Assoc) of cost estimates.
 
-%!  run_query(+Model, +Query, -Result) is det.
+%!  run_query(+Source, +Query, -Result) is det.
 %
 %   Result is select(Vars, Rows) or ask(Bool), the result of the
-%   algebra Query (from oro_sparql_grammar) over Model.
+%   algebra Query (from oro_sparql_grammar) over Source: a model (its
+%   inference closure), asserted(Model) (the triples visible in Model,
+%   without inference) or graphs(Graphs) (the RDF merge of the rdf_db
+%   graphs Graphs).
 
-run_query(Model, Query0, Result) :-
+run_query(Source, Query0, Result) :-
     annotate_query(Query0, Query),
     empty_assoc(Empty),
-    Ctx = ctx(Model, [], none, cache(Empty)),
+    Ctx = ctx(Source, [], none, cache(Empty)),
     query_result(Query, Ctx, Result).
 
 query_result(select(Proj, D, P, Mods), Ctx, select(Vars, Rows)) :-
@@ -450,9 +456,29 @@ run_goal(path(S, Path, O), Ctx) :-
 run_goal(test(E, Mu), Ctx) :-
     expr_true(E, Mu, Ctx).
 
-triple(ctx(Model, _, _, _), S, P, O) :-
+triple(ctx(Source, _, _, _), S, P, O) :-
     resource_or_var(S),
     resource_or_var(P),
+    source_triple(Source, S, P, O).
+
+%   source_triple(+Source, ?S, ?P, ?O): S-P-O is a triple of the
+%   default graph Source: a model (its inference closure),
+%   asserted(Model) (the triples visible in Model, without inference)
+%   or graphs(Graphs) (the RDF merge of the rdf_db graphs Graphs).
+%   Each triple comes once.
+
+source_triple(asserted(Model), S, P, O) :-
+    !,
+    distinct(t(S, P, O), oro_asserted(Model, S, P, O)).
+source_triple(graphs(Graphs), S, P, O) :-
+    !,
+    (   Graphs = [Graph]
+    ->  rdf(S, P, O, Graph)
+    ;   distinct(t(S, P, O), ( member(Graph, Graphs),
+                               rdf(S, P, O, Graph)
+                             ))
+    ).
+source_triple(Model, S, P, O) :-
     oro_holds(Model, S, P, O).
 
 resource_or_var(X) :-
