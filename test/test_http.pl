@@ -209,6 +209,53 @@ test(graphs_page, [true(Found == true)]) :-
                 sub_string(Body, _, _, _, "oro:myself#longterm")
               ), Found).
 
+
+test(construct_ntriples, [true(Answer == ['application/n-triples; charset=UTF-8', Expected])]) :-
+    hp_request('/sparql', get([query="CONSTRUCT { ?x oro:heavy ?w . _:b oro:of ?x } WHERE { ?x oro:grams ?w }"]),
+               'application/n-triples', 200, Type, Body),
+    Expected = "_:c1b_5f_b <http://kb.openrobots.org#of> <http://kb.openrobots.org#zork> .\n<http://kb.openrobots.org#zork> <http://kb.openrobots.org#heavy> \"50\"^^<http://www.w3.org/2001/XMLSchema#int> .\n",
+    Answer = [Type, Body].
+
+test(construct_any_type_is_turtle, [true(Answer == ['text/turtle; charset=UTF-8', Expected])]) :-
+    hp_request('/sparql', get([query="CONSTRUCT WHERE { ?x oro:grams ?w ; a ?c }", infer=false]),
+               '*/*', 200, Type, Body),
+    Expected = "<http://kb.openrobots.org#zork>\n    <http://kb.openrobots.org#grams> \"50\"^^<http://www.w3.org/2001/XMLSchema#int> ;\n    <http://www.w3.org/1999/02/22-rdf-syntax-ns#type> <http://kb.openrobots.org#Monkey> .\n",
+    Answer = [Type, Body].
+
+test(construct_json_406, [true(Status == 406)]) :-
+    hp_request('/sparql', get([query="CONSTRUCT WHERE { ?x oro:grams ?w }"]),
+               'application/sparql-results+json', Status, _, _).
+
+test(describe, [true(Body == Expected)]) :-
+    hp_request('/sparql', get([query="DESCRIBE ?x WHERE { ?x oro:grams ?w }", infer=false]),
+               'application/n-triples', 200, _, Body),
+    Expected = "<http://kb.openrobots.org#zork> <http://kb.openrobots.org#grams> \"50\"^^<http://www.w3.org/2001/XMLSchema#int> .\n<http://kb.openrobots.org#zork> <http://kb.openrobots.org#label> \"Zork, the \\\"big\\\" one\"@en .\n<http://kb.openrobots.org#zork> <http://www.w3.org/1999/02/22-rdf-syntax-ns#type> <http://kb.openrobots.org#Monkey> .\n".
+
+test(graph_over_named_graphs, [true(Answer == ["oro:myself#longterm"-"http://kb.openrobots.org#zork", []])]) :-
+    testsuite_url(URL),
+    hp_request('/sparql', get([query="SELECT ?g ?x WHERE { GRAPH ?g { ?x oro:grams ?w } }"]),
+               'application/sparql-results+json', 200, _, Body),
+    sparql_json(Body, Dict),
+    findall(G-X, ( member(B, Dict.results.bindings), G = B.g.value, X = B.x.value ), [Pair]),
+    hp_request('/sparql', get([query="SELECT ?g ?x WHERE { GRAPH ?g { ?x oro:grams ?w } }",
+                               'named-graph-uri'=URL]),
+               'application/sparql-results+json', 200, _, Body2),
+    sparql_json(Body2, Dict2),
+    Answer = [Pair, Dict2.results.bindings].
+
+test(from_file_graph, [true(Answer == [false, true])]) :-
+    testsuite_url(URL),
+    format(string(Q1), "ASK FROM <~w> { oro:zork ?p ?o }", [URL]),
+    format(string(Q2), "ASK FROM <~w> { oro:baboon ?p ?o }", [URL]),
+    hp_request('/sparql', get([query=Q1]), 'application/sparql-results+json', 200, _, B1),
+    hp_request('/sparql', get([query=Q2]), 'application/sparql-results+json', 200, _, B2),
+    sparql_json(B1, D1),
+    sparql_json(B2, D2),
+    Answer = [D1.boolean, D2.boolean].
+
+test(oro_sparql_method_refuses_construct, [error(syntax_error(oro_sparql(_, 0)))]) :-
+    oro_sparql_json(myself, "CONSTRUCT WHERE { ?x oro:grams ?w }", _).
+
 :- end_tests(http_sparql_protocol).
 
 		 /*******************************

@@ -335,7 +335,7 @@ test(parse_error_message, true(Found == true)) :-
     catch(oro_sparql_parse("ASK  ", _), E, true),
     '$messages':translate_message(E, Lines, []),
     with_output_to(string(Text), print_message_lines(current_output, '', Lines)),
-    (   sub_string(Text, _, _, _, "SPARQL: Line 1, column 6: Encountered the end of the query, was expecting one of: \"WHERE\", \"{\"")
+    (   sub_string(Text, _, _, _, "SPARQL: Line 1, column 6: Encountered the end of the query, was expecting one of: \"FROM\", \"WHERE\", \"{\"")
     ->  Found = true
     ;   Found = Text
     ).

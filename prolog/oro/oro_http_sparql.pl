@@ -20,18 +20,21 @@ says: a query by GET (`?query=...`), by POST of a form
 (`application/x-www-form-urlencoded`, field `query`) or by POST of the
 query itself (`application/sparql-query`).  Parameters:
 
-  - `default-graph-uri` (repeatable): the default graph is the merge of
-    these graphs (see oro_sparql_graph/2 and the page `/graphs`);
+  - `default-graph-uri` and `named-graph-uri` (repeatable): the
+    dataset, overriding the query's FROM and FROM NAMED (see
+    oro_sparql_graph/2 and the page `/graphs`);
   - `infer`: `true` (default) queries the inference closure of the
     model, `false` the triples asserted in it (GraphDB's convention);
-  - `format`: `json`, `xml`, `csv` or `tsv`, overriding the `Accept`
-    header (for browsers).
+  - `format`: `json`, `xml`, `csv`, `tsv`, `turtle` or `ntriples`,
+    overriding the `Accept` header (for browsers).
 
 Results are negotiated with `Accept`: SPARQL JSON
 (`application/sparql-results+json`, also `application/json`), XML
 (`application/sparql-results+xml`, `application/xml`, `text/xml`), CSV
-(`text/csv`) or TSV (`text/tab-separated-values`); no
-`Accept` header or one accepting any type gives JSON.  Errors: 400 for a malformed request or query
+(`text/csv`) or TSV (`text/tab-separated-values`) for SELECT and ASK;
+Turtle (`text/turtle`) or N-Triples (`application/n-triples`,
+`text/plain`) for CONSTRUCT and DESCRIBE.  No `Accept` header or one
+accepting any type gives JSON or Turtle.  Errors: 400 for a malformed request or query
 (with the message as text/plain), 404 for an unknown agent, 406 when no
 acceptable format is offered, 403 for an update (the endpoint is
 read-only: nothing changes), 503 past the query time limit
@@ -52,13 +55,10 @@ answer(Request) :-
     request_query(Request, Text, Params),
     option_values('default-graph-uri', Params, Defaults),
     option_values('named-graph-uri', Params, Named),
-    (   Named == []
-    ->  true
-    ;   throw(reply(400, "named-graph-uri is not supported: \c
-                          this endpoint has no GRAPH patterns"))
-    ),
     infer(Params, Infer),
-    findall(default_graph(G), member(G, Defaults), GraphOptions),
+    findall(default_graph(G), member(G, Defaults), DefaultOptions),
+    findall(named_graph(G), member(G, Named), NamedOptions),
+    append(DefaultOptions, NamedOptions, GraphOptions),
     debug(oro(http), 'SPARQL ~w (infer ~w, ~q): ~w',
           [Model, Infer, Defaults, Text]),
     oro_store_read(oro_sparql(Model, Text, Result,
@@ -147,16 +147,22 @@ infer(Params, Infer) :-
 %   result_type(?Kind, ?Format, ?Type): the media types of the results
 %   of a Kind of query, preferred first.
 
-result_type(table, json, 'application/sparql-results+json').
-result_type(table, xml,  'application/sparql-results+xml').
-result_type(table, csv,  'text/csv').
-result_type(table, tsv,  'text/tab-separated-values').
-result_type(table, json, 'application/json').
-result_type(table, xml,  'application/xml').
-result_type(table, xml,  'text/xml').
+result_type(bindings, json, 'application/sparql-results+json').
+result_type(bindings, xml,  'application/sparql-results+xml').
+result_type(bindings, csv,  'text/csv').
+result_type(bindings, tsv,  'text/tab-separated-values').
+result_type(bindings, json, 'application/json').
+result_type(bindings, xml,  'application/xml').
+result_type(bindings, xml,  'text/xml').
 
-result_kind(select(_, _), table).
-result_kind(ask(_), table).
+result_type(graph, turtle,   'text/turtle').
+result_type(graph, ntriples, 'application/n-triples').
+result_type(graph, ntriples, 'text/plain').
+result_type(graph, turtle,   'application/x-turtle').
+
+result_kind(select(_, _), bindings).
+result_kind(ask(_), bindings).
+result_kind(graph(_), graph).
 
 negotiate(Request, Params, Result, Format, Type) :-
     result_kind(Result, Kind),

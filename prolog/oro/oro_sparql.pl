@@ -81,8 +81,11 @@ oro_sparql_parse(Text, Query) :-
 %   Result is select(Vars, Rows) for a SELECT query, Vars the projected
 %   variable names (atoms) and Rows a list of rows, each a list of
 %   Var-Value pairs in the order of Vars, for the variables bound in
-%   that row (Value an IRI, a blank node or an rdf_db literal term); or
-%   ask(Bool) for an ASK query.
+%   that row (Value an IRI, a blank node or an rdf_db literal term);
+%   ask(Bool) for an ASK query; graph(Triples), a sorted list of
+%   rdf(S, P, O), for CONSTRUCT and DESCRIBE.  FROM, FROM NAMED and
+%   GRAPH name the graphs of oro_sparql_graph/2; without FROM, every
+%   graph of the store is a named graph.
 %
 %   @error existence_error(agent, Model) for an unknown model.
 %   @error syntax_error(oro_sparql(Message, Position)) for a malformed
@@ -106,6 +109,11 @@ oro_sparql(Model, Text, Result) :-
 %       merge of these graphs (see oro_sparql_graph/2), as they are
 %       stored (infer/1 does not apply); a graph IRI naming no graph
 %       of the store is an empty graph.
+%     - named_graph(IRI), repeatable: the named graphs GRAPH sees.
+%
+%   With default_graph/1 or named_graph/1, the dataset is exactly the
+%   graphs they name, and the query's FROM and FROM NAMED are ignored
+%   (as the SPARQL 1.1 Protocol says).
 %
 %   @error existence_error(agent, Model) for an unknown model.
 %   @error syntax_error(oro_sparql(Message, Position)) for a malformed
@@ -131,12 +139,26 @@ oro_sparql_graph(IRI, Graph) :-
 
 %!  oro_sparql_result_text(+Format, +Result, -Text) is det.
 %
-%   Text (a string) is Result, as oro_sparql/3 gives it, in Format:
-%   `json` (SPARQL 1.1 Query Results JSON), `xml` (SPARQL Query Results
-%   XML), `csv` or `tsv` (SPARQL 1.1 Query Results CSV and TSV).
+%   Text (a string) is Result, as oro_sparql/3 gives it, in Format.
+%   For select/2 and ask/1: `json` (SPARQL 1.1 Query Results JSON),
+%   `xml` (SPARQL Query Results XML), `csv` or `tsv` (SPARQL 1.1 Query
+%   Results CSV and TSV).  For graph/1: `turtle` or `ntriples`.
+%
+%   @error domain_error(sparql_result_format(Kind), Format) if Format
+%          does not write Result (Kind `bindings` or `graph`).
 
 oro_sparql_result_text(Format, Result, Text) :-
-    must_be(oneof([json, xml, csv, tsv]), Format),
+    must_be(oneof([json, xml, csv, tsv, turtle, ntriples]), Format),
+    (   Result = graph(_)
+    ->  Kind = graph,
+        Formats = [turtle, ntriples]
+    ;   Kind = bindings,
+        Formats = [json, xml, csv, tsv]
+    ),
+    (   memberchk(Format, Formats)
+    ->  true
+    ;   domain_error(sparql_result_format(Kind), Format)
+    ),
     oro_sparql_load,
     oro_sparql_engine:oro_sparql_result_text(Format, Result, Text).
 
@@ -144,6 +166,9 @@ oro_sparql_result_text(Format, Result, Text) :-
 %
 %   As oro_sparql/3, with the result as a string in the SPARQL 1.1
 %   Query Results JSON Format, on one line.
+%
+%   @error syntax_error(oro_sparql(Message, 0)) for a CONSTRUCT or
+%          DESCRIBE query, whose result is a graph.
 
 oro_sparql_json(Model, Text, JSON) :-
     oro_sparql_load,

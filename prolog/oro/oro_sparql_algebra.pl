@@ -47,6 +47,12 @@ annotate_query(select(Proj0, D, P0, Mods0), select(Proj, D, P, Mods)) :-
 annotate_query(ask(P0, Mods0), ask(P, Mods)) :-
     annotate(P0, P),
     annotate_expr(Mods0, Mods).
+annotate_query(construct(T, P0, Mods0), construct(T, P, Mods)) :-
+    annotate(P0, P),
+    annotate_expr(Mods0, Mods).
+annotate_query(describe(T, P0, Mods0), describe(T, P, Mods)) :-
+    annotate(P0, P),
+    annotate_expr(Mods0, Mods).
 
 annotate_item(var(N), var(N)).
 annotate_item(as(E0, N), as(E, N)) :-
@@ -83,6 +89,13 @@ annotate(values(Vars, Rows), p(C, values(Rows))) :-
     include(bound_in_all(Rows), Sorted, C).
 annotate(subselect(Q0), p([], subselect(Q, cache(none)))) :-
     annotate_query(Q0, Q).
+annotate(graph(T, P0), p(C, graph(T, P))) :-
+    annotate(P0, P),
+    P = p(CP, _),
+    (   T = var(N)
+    ->  ord_add_element(CP, N, C)
+    ;   C = CP
+    ).
 
 %   push_filter(+Expr, +Annotated, -Pattern): the conjuncts of a FILTER
 %   over a basic graph pattern whose variables the pattern binds become
@@ -396,7 +409,7 @@ memo(Key, ctx(_, _, _, Cache), Value, Goal) :-
 %   Only a model (an atom) has a schema closure: asserted(Model) and
 %   graphs(Graphs) are estimated by their triples alone.
 
-cached_cost(Key, ctx(Model, _, _, Cache), Cost) :-
+cached_cost(Key, ctx(ds(Model, _), _, _, Cache), Cost) :-
     arg(1, Cache, Assoc),
     (   get_assoc(Key, Assoc, Cost0)
     ->  Cost = Cost0

@@ -13,6 +13,8 @@
 :- use_module(oro_sparql_xml, [result_xml/2]).
 :- use_module(oro_sparql_csv, [result_csv/2]).
 :- use_module(oro_sparql_tsv, [result_tsv/2]).
+:- use_module(oro_sparql_turtle, [result_turtle/2]).
+:- use_module(oro_sparql_ntriples, [result_ntriples/2]).
 :- use_module(library(option), [option/3]).
 
 /** <module> SPARQL 1.1 queries over the inference closure of a model
@@ -35,7 +37,10 @@ are imported.
 
 Supported: PREFIX and BASE (the server's prefixes are predeclared:
 those of oro_prefix/2, and `:` for the default namespace), SELECT
-(variables, `*`, DISTINCT, REDUCED, `(Expression AS ?v)`), ASK, basic
+(variables, `*`, DISTINCT, REDUCED, `(Expression AS ?v)`), ASK,
+CONSTRUCT (and CONSTRUCT WHERE), DESCRIBE (the triples of each
+resource, with those of the blank nodes they reach), FROM, FROM NAMED
+and GRAPH (over the graphs of oro_sparql_graph/2), basic
 graph patterns with `;`, `,`, blank nodes (`_:b`, `[ ... ]`) and
 collections, FILTER, OPTIONAL, UNION, MINUS, BIND, VALUES (inline and
 trailing), sub-SELECT, GROUP BY, HAVING, the aggregates COUNT, SUM,
@@ -49,8 +54,15 @@ STRBEFORE, STRAFTER, STRLEN, SUBSTR, UCASE, LCASE, CONCAT,
 ENCODE_FOR_URI, STRLANG, STRDT, ABS, CEIL, FLOOR, ROUND, IF, COALESCE,
 sameTerm and the XSD casts (xsd:string, xsd:integer, xsd:decimal,
 xsd:double, xsd:float, xsd:boolean).  Not supported (a clear parse
-error): CONSTRUCT, DESCRIBE, FROM, GRAPH, SERVICE, updates and the
-date, hash and random functions.
+error): SERVICE, updates and the date, hash and random functions.
+
+The modules of the engine, one per seam: oro_sparql_lexer (tokens),
+oro_sparql_grammar (the DCG, text to algebra), oro_sparql_algebra
+(annotation and the planner of basic graph patterns), oro_sparql_eval
+(the evaluator, datasets, CONSTRUCT and DESCRIBE), oro_sparql_functions
+(expressions, functions, aggregates), and one per result format:
+oro_sparql_json, oro_sparql_xml, oro_sparql_csv, oro_sparql_tsv,
+oro_sparql_turtle, oro_sparql_ntriples.
 
 Semantics follow the SPARQL 1.1 specification: errors in expressions
 make a FILTER false, `||` and `&&` follow the three-valued logic of
@@ -130,8 +142,9 @@ oro_sparql_parse(Text, Query) :-
 
 oro_sparql(Model0, Text, Result) :-
     oro_resolve_model(Model0, Model),
-    oro_with_time_limit(( oro_sparql_parse(Text, Query),
-                          run_query(Model, Query, Result)
+    oro_with_time_limit(( oro_sparql_parse(Text, Query0),
+                          query_dataset(Query0, Model, true, [], [], Query, DS),
+                          run_query(DS, Query, Result)
                         )).
 
 %!  oro_sparql(+Model, +Text, -Result, +Options) is det.
@@ -144,19 +157,54 @@ oro_sparql(Model0, Text, Result, Options) :-
     option(infer(Infer), Options, true),
     must_be(boolean, Infer),
     findall(G, member(default_graph(G), Options), Defaults),
+    findall(G, member(named_graph(G), Options), Named),
     maplist(must_be(atom), Defaults),
-    (   Defaults \== []
-    ->  maplist(iri_graphs, Defaults, Graphss),
+    maplist(must_be(atom), Named),
+    oro_with_time_limit(( oro_sparql_parse(Text, Query0),
+                          query_dataset(Query0, Model, Infer, Defaults, Named,
+                                        Query, DS),
+                          run_query(DS, Query, Result)
+                        )).
+
+%   query_dataset(+Query0, +Model, +Infer, +Defaults, +Named, -Query,
+%   -Dataset): the dataset of a query (see run_query/3).  Graphs given
+%   by the caller (the protocol's default-graph-uri and
+%   named-graph-uri) override those of the query's FROM and FROM NAMED.
+%   Without either, the default graph is Model (its inference closure,
+%   or its asserted triples if Infer is false) and every graph of the
+%   store is a named graph; with either, the dataset is exactly the
+%   graphs named (an empty default graph if none).
+
+query_dataset(Query0, Model, Infer, Defaults0, Named0, Query, Dataset) :-
+    (   Query0 = from(FromDefaults, FromNamed, Query)
+    ->  true
+    ;   Query = Query0,
+        FromDefaults = [],
+        FromNamed = []
+    ),
+    (   ( Defaults0 \== [] ; Named0 \== [] )
+    ->  Defaults = Defaults0,
+        Named = Named0
+    ;   Defaults = FromDefaults,
+        Named = FromNamed
+    ),
+    (   Defaults == [],
+        Named == []
+    ->  (   Infer == true
+        ->  Default = Model
+        ;   Default = asserted(Model)
+        ),
+        findall(IRI-[G], oro_sparql_graph(IRI, G), NamedGraphs)
+    ;   maplist(iri_graphs, Defaults, Graphss),
         append(Graphss, Graphs0),
         sort(Graphs0, Graphs),
-        Source = graphs(Graphs)
-    ;   Infer == true
-    ->  Source = Model
-    ;   Source = asserted(Model)
+        Default = graphs(Graphs),
+        sort(Named, NamedIRIs),
+        findall(IRI-Gs, ( member(IRI, NamedIRIs),
+                          iri_graphs(IRI, Gs)
+                        ), NamedGraphs)
     ),
-    oro_with_time_limit(( oro_sparql_parse(Text, Query),
-                          run_query(Source, Query, Result)
-                        )).
+    Dataset = ds(Default, NamedGraphs).
 
 iri_graphs(IRI, Graphs) :-
     findall(G, oro_sparql_graph(IRI, G), Graphs).
@@ -184,6 +232,10 @@ oro_sparql_result_text(csv, Result, Text) :-
     result_csv(Result, Text).
 oro_sparql_result_text(tsv, Result, Text) :-
     result_tsv(Result, Text).
+oro_sparql_result_text(turtle, Result, Text) :-
+    result_turtle(Result, Text).
+oro_sparql_result_text(ntriples, Result, Text) :-
+    result_ntriples(Result, Text).
 
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %
@@ -191,7 +243,10 @@ oro_sparql_result_text(tsv, Result, Text) :-
 
 oro_sparql_json(Model, Text, JSON) :-
     oro_sparql(Model, Text, Result),
-    result_json(Result, JSON).
+    (   Result = graph(_)
+    ->  sparql_error("a SELECT or ASK query is expected", 0, Text)
+    ;   result_json(Result, JSON)
+    ).
 
 %!  oro_query_values(+Model, +Key, +Text, -Values) is det.
 %
@@ -201,12 +256,13 @@ oro_query_values(Model0, Key, Text, Values) :-
     oro_resolve_model(Model0, Model),
     must_be(text, Key),
     key_name(Key, Name),
-    oro_with_time_limit(( oro_sparql_parse(Text, Query),
+    oro_with_time_limit(( oro_sparql_parse(Text, Query0),
+                          query_dataset(Query0, Model, true, [], [], Query, DS),
                           (   Query = select(_, _, _, _)
                           ->  true
                           ;   sparql_error("a SELECT query is expected", 0, Text)
                           ),
-                          run_query(Model, Query, select(_, Rows))
+                          run_query(DS, Query, select(_, Rows))
                         )),
     findall(V, ( member(Row, Rows),
                  memberchk(Name-V, Row),
@@ -254,7 +310,7 @@ oro_find(Model0, Var, Patterns, Filters, Values) :-
                        mods(false, none, [], [], 0, inf, none)),
         oro_with_time_limit(( maplist(parse_filter, Filters, Exprs),
                               conjunction(Exprs, Filter),
-                              run_query(Model, Query, select(_, Rows))
+                              run_query(ds(Model, []), Query, select(_, Rows))
                             )),
         findall(V, ( member(Row, Rows),
                      memberchk(Name-V, Row),

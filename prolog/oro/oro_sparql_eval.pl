@@ -1,5 +1,5 @@
 :- module(oro_sparql_eval,
-          [ run_query/3,                % +Source, +Query, -Result
+          [ run_query/3,                % +Dataset, +Query, -Result
             eval/4,                     % +Pattern, +Ctx, +Mu0, -Mu
             lookup/4,                   % +Name, +Mu, +Ctx, -Value
             term_order/3                % +A, +B, -Order
@@ -30,35 +30,109 @@ LIMIT) apply in the order of the specification.
 		 *         QUERY RUNNER         *
 		 *******************************/
 
-%   The evaluation context: ctx(Source, Subst, Group, Cache), Source
-%   the default graph (see source_triple/4), Subst the
+%   The evaluation context: ctx(Dataset, Subst, Group, Cache), Dataset
+%   ds(Default, Named) (see run_query/3), Subst the
 %   bindings EXISTS substitutes (Name-Value, sorted), Group the member
 %   solutions of the current group (or `none`), Cache a mutable
 %   cache(Assoc) of cost estimates.
 
-%!  run_query(+Source, +Query, -Result) is det.
+%!  run_query(+Dataset, +Query, -Result) is det.
 %
-%   Result is select(Vars, Rows) or ask(Bool), the result of the
-%   algebra Query (from oro_sparql_grammar) over Source: a model (its
+%   Result is select(Vars, Rows), ask(Bool) or graph(Triples) (CONSTRUCT
+%   and DESCRIBE; a sorted list of rdf(S, P, O)), the result of the
+%   algebra Query (from oro_sparql_grammar) over Dataset,
+%   ds(Default, Named).  Default is the default graph: a model (its
 %   inference closure), asserted(Model) (the triples visible in Model,
 %   without inference) or graphs(Graphs) (the RDF merge of the rdf_db
-%   graphs Graphs).
+%   graphs Graphs).  Named lists the named graphs as IRI-Graphs.
 
-run_query(Source, Query0, Result) :-
+run_query(Dataset, Query0, Result) :-
     annotate_query(Query0, Query),
     empty_assoc(Empty),
-    Ctx = ctx(Source, [], none, cache(Empty)),
+    Ctx = ctx(Dataset, [], none, cache(Empty)),
     query_result(Query, Ctx, Result).
 
 query_result(select(Proj, D, P, Mods), Ctx, select(Vars, Rows)) :-
     projection_names(Proj, Vars),
     select_rows(select(Proj, D, P, Mods), Ctx, Rows).
+query_result(construct(Template, P, Mods), Ctx, graph(Triples)) :-
+    template_variables(Template, Vars),
+    findall(var(V), member(V, Vars), Proj),
+    select_rows(select(Proj, all, P, Mods), Ctx, Rows),
+    findall(Triple, ( nth1(I, Rows, Row),
+                      member(T, Template),
+                      instantiate(T, I, Row, Triple)
+                    ), Triples0),
+    sort(Triples0, Triples).
+query_result(describe(Terms0, P, Mods), Ctx, graph(Triples)) :-
+    (   Terms0 == star
+    ->  P = p(Certain, _),
+        findall(var(V), member(V, Certain), Terms)
+    ;   Terms = Terms0
+    ),
+    findall(var(V), member(var(V), Terms), Proj),
+    select_rows(select(Proj, all, P, Mods), Ctx, Rows),
+    findall(R, ( member(R, Terms), atom(R)
+               ; member(Row, Rows), member(_-R, Row)
+               ), Resources0),
+    sort(Resources0, Resources),
+    findall(Triple, ( member(R, Resources),
+                      described(R, Ctx, Triple)
+                    ), Triples0),
+    sort(Triples0, Triples).
 query_result(ask(P, mods(A, G, H, O, Off, Lim0, V)), Ctx, ask(Bool)) :-
     Lim is min(Lim0, 1),
     select_rows(select([], all, P, mods(A, G, H, O, Off, Lim, V)), Ctx, Rows),
     (   Rows == []
     ->  Bool = false
     ;   Bool = true
+    ).
+
+%   template_variables(+Template, -Vars): the variables of a
+%   CONSTRUCT template.
+
+template_variables(Template, Vars) :-
+    findall(V, ( member(rdf(S, P, O), Template),
+                 member(var(V), [S, P, O])
+               ), Vars0),
+    sort(Vars0, Vars).
+
+%   instantiate(+TemplateTriple, +I, +Row, -Triple): the triple of the
+%   I-th solution Row; fails if a variable is unbound or the triple is
+%   not RDF (a literal subject, a predicate that is not an IRI).
+
+instantiate(rdf(S0, P0, O0), I, Row, rdf(S, P, O)) :-
+    template_term(S0, I, Row, S),
+    template_term(P0, I, Row, P),
+    template_term(O0, I, Row, O),
+    atom(S),
+    atom(P),
+    \+ rdf_is_bnode(P).
+
+template_term(var(N), _, Row, V) :-
+    !,
+    memberchk(N-V, Row).
+template_term(tbnode(N), I, _, B) :-
+    !,
+    atom_concat('_:', Label, N),
+    format(atom(B), '_:c~d~w', [I, Label]).
+template_term(T, _, _, T).
+
+%   described(+Resource, +Ctx, -Triple): the triples describing a
+%   resource: those of which it is the subject, and recursively those
+%   of the blank nodes they reach (its concise bounded description,
+%   without reification).
+
+described(R, Ctx, Triple) :-
+    described(R, Ctx, [R], Triple).
+
+described(R, Ctx, Seen, Triple) :-
+    findall(rdf(R, P, O), triple(Ctx, R, P, O), Triples),
+    member(rdf(R, P, O), Triples),
+    (   Triple = rdf(R, P, O)
+    ;   rdf_is_bnode(O),
+        \+ memberchk(O, Seen),
+        described(O, Ctx, [O|Seen], Triple)
     ).
 
 projection_names(Proj, Vars) :-
@@ -322,6 +396,21 @@ solve(extend(p(_, A), N, E), Ctx, In, Mu) :-
 solve(values(Rows), _, In, Mu) :-
     member(Mu, Rows),
     compatible(In, Mu).
+solve(graph(T, P), Ctx, In, Mu) :-
+    Ctx = ctx(ds(_, Named), Subst, Group, Cache),
+    (   T = var(N)
+    ->  (   memberchk(N-IRI, In)
+        ->  true
+        ;   memberchk(N-IRI, Subst)
+        ->  true
+        ;   true
+        ),
+        member(IRI-Graphs, Named),
+        eval(P, ctx(ds(graphs(Graphs), Named), Subst, Group, Cache), In, Mu1),
+        put_binding(N, IRI, Mu1, Mu)
+    ;   memberchk(T-Graphs, Named),
+        eval(P, ctx(ds(graphs(Graphs), Named), Subst, Group, Cache), In, Mu)
+    ).
 solve(subselect(Query, Cache), Ctx, In, Mu) :-
     subselect_rows(Query, Cache, Ctx, Rows),
     member(Row, Rows),
@@ -456,7 +545,7 @@ run_goal(path(S, Path, O), Ctx) :-
 run_goal(test(E, Mu), Ctx) :-
     expr_true(E, Mu, Ctx).
 
-triple(ctx(Source, _, _, _), S, P, O) :-
+triple(ctx(ds(Source, _), _, _, _), S, P, O) :-
     resource_or_var(S),
     resource_or_var(P),
     source_triple(Source, S, P, O).

@@ -190,28 +190,120 @@ semantic_error(Format, Args, P) :-
 query_unit(St0, Query) -->
     prologue(St0, St),
     (   kw(select)
-    ->  select_query(St, Query0)
+    ->  select_query(St, Query0, Dataset)
     ;   kw(ask)
-    ->  ask_query(St, Query0)
+    ->  ask_query(St, Query0, Dataset)
+    ;   kw(construct)
+    ->  construct_query(St, Query0, Dataset)
+    ;   kw(describe)
+    ->  describe_query(St, Query0, Dataset)
     ;   unsupported_form
     ),
     values_clause(St, Values),
-    { add_values(Query0, Values, Query) },
+    { add_values(Query0, Values, Query1),
+      (   Dataset == []
+      ->  Query = Query1
+      ;   findall(G, member(default(G), Dataset), Defaults),
+          findall(G, member(named(G), Dataset), Named),
+          Query = from(Defaults, Named, Query1)
+      )
+    },
     tok(eof).
 
 unsupported_form -->
     tokp(word(W, Word), P),
-    { memberchk(W, [construct, describe, insert, delete, load, clear,
-                    create, drop, with]),
+    { memberchk(W, [insert, delete, load, clear, create, drop, with, add,
+                    move, copy]),
       upcase_atom(Word, Up),
-      semantic_error("~w is not supported (only SELECT and ASK queries)",
+      semantic_error("~w is not supported (updates are refused: only \c
+                      SELECT, ASK, CONSTRUCT and DESCRIBE queries)",
                      [Up], P)
     }.
+
+%   CONSTRUCT: a template of triples, instantiated by each solution.
+%   Blank nodes of the template are tbnode(Label), fresh for each
+%   solution; those of the WHERE clause are hidden variables.
+
+construct_query(St, construct(Template, Pattern, Mods), Dataset) -->
+    (   peek_punct('{')
+    ->  tok(punct('{')),
+        template_triples(St, Triples),
+        tok(punct('}')),
+        dataset_clauses(St, Dataset),
+        where_clause(St, Pattern)
+    ;   dataset_clauses(St, Dataset),
+        kw(where),
+        tok(punct('{')),
+        template_triples(St, Triples),
+        tok(punct('}')),
+        { Pattern = bgp(Triples) }
+    ),
+    solution_modifier(St, m(Group, Having, Order, Offset, Limit)),
+    { maplist(template_triple, Triples, Template),
+      Mods = mods(false, Group, Having, Order, Offset, Limit, none)
+    }.
+
+template_triples(St, Triples) -->
+    (   triples_block(St, Triples0)
+    ->  { Triples = Triples0 }
+    ;   { Triples = [] }
+    ).
+
+template_triple(rdf(S0, P0, O0), rdf(S, P, O)) :-
+    !,
+    maplist(template_node, [S0, P0, O0], [S, P, O]).
+template_triple(path(S0, link(P), O0), rdf(S, P, O)) :-
+    !,
+    maplist(template_node, [S0, O0], [S, O]).
+template_triple(T, _) :-
+    semantic_error("CONSTRUCT template: property paths are not allowed: ~q",
+                   [T], 0).
+
+template_node(var(N), T) :-
+    !,
+    (   hidden_variable(N)
+    ->  T = tbnode(N)
+    ;   T = var(N)
+    ).
+template_node(T, T).
+
+%   DESCRIBE: the resources (IRIs and variables, or `*`) to describe.
+
+describe_query(St, describe(Terms, Pattern, Mods), Dataset) -->
+    (   tok(punct(*))
+    ->  { Terms = star }
+    ;   describe_term(St, T),
+        describe_terms(St, Ts),
+        { Terms = [T|Ts] }
+    ),
+    dataset_clauses(St, Dataset),
+    (   ( peek_kw(where) ; peek_punct('{') )
+    ->  where_clause(St, Pattern)
+    ;   { Pattern = bgp([]) }
+    ),
+    solution_modifier(St, m(Group, Having, Order, Offset, Limit)),
+    { Mods = mods(false, Group, Having, Order, Offset, Limit, none) }.
+
+describe_terms(St, [T|Ts]) -->
+    describe_term(St, T),
+    !,
+    describe_terms(St, Ts).
+describe_terms(_, []) --> [].
+
+describe_term(_, var(N)) -->
+    tok(var(N)),
+    !.
+describe_term(St, IRI) -->
+    iri(St, IRI).
 
 add_values(select(Pr, D, P, mods(A, G, H, O, Off, L, _)), Values,
            select(Pr, D, P, mods(A, G, H, O, Off, L, Values))).
 add_values(ask(P, mods(A, G, H, O, Off, L, _)), Values,
            ask(P, mods(A, G, H, O, Off, L, Values))).
+add_values(construct(T, P, mods(A, G, H, O, Off, L, _)), Values,
+           construct(T, P, mods(A, G, H, O, Off, L, Values))).
+add_values(describe(T, P, mods(A, G, H, O, Off, L, _)), Values,
+           describe(T, P, mods(A, G, H, O, Off, L, Values))).
 
 prologue(St0, St) -->
     (   kw(base)
@@ -239,9 +331,9 @@ prologue(St0, St) -->
 
 %   SELECT: the projection, WHERE clause and solution modifiers.
 
-select_query(St, Query) -->
+select_query(St, Query, Dataset) -->
     select_clause(St, Distinct, Proj0),
-    dataset_clauses,
+    dataset_clauses(St, Dataset),
     where_clause(St, Pattern),
     solution_modifier(St, Mods0),
     { make_select(Proj0, Distinct, Pattern, Mods0, Query) }.
@@ -277,12 +369,20 @@ projection_item(St, as(E, N)-P) -->
     tokp(var(N), P),
     tok(punct(')')).
 
-dataset_clauses -->
-    (   quiet_word(from, P)
-    ->  { semantic_error("FROM is not supported (one model, no named graphs)",
-                         [], P) }
-    ;   []
-    ).
+%   dataset_clauses(+St, -Dataset): FROM and FROM NAMED, a list of
+%   default(IRI) and named(IRI).
+
+dataset_clauses(St, [D|Ds]) -->
+    kw(from),
+    !,
+    (   kw(named)
+    ->  iri(St, IRI),
+        { D = named(IRI) }
+    ;   iri(St, IRI),
+        { D = default(IRI) }
+    ),
+    dataset_clauses(St, Ds).
+dataset_clauses(_, []) --> [].
 
 where_clause(St, Pattern) -->
     (   kw(where)
@@ -291,8 +391,8 @@ where_clause(St, Pattern) -->
     ),
     group_graph_pattern(St, Pattern).
 
-ask_query(St, ask(Pattern, Mods)) -->
-    dataset_clauses,
+ask_query(St, ask(Pattern, Mods), Dataset) -->
+    dataset_clauses(St, Dataset),
     where_clause(St, Pattern),
     solution_modifier(St, Mods0),
     { Mods0 = m(Group, Having, Order, Offset, Limit),
@@ -525,7 +625,12 @@ group_graph_pattern(St0, Pattern) -->
     tok(punct('}')).
 
 sub_select(St, Query) -->
-    select_query(St, Query0),
+    here(P),
+    select_query(St, Query0, Dataset),
+    { Dataset == []
+    ->  true
+    ;   semantic_error("FROM is not allowed in a sub-select", [], P)
+    },
     values_clause(St, Values),
     { add_values(Query0, Values, Query) }.
 
@@ -584,13 +689,23 @@ pattern_not_triples(St, E) -->
         { E = bind(X, N, P) }
     ;   kw(values)
     ->  data_block(St, E)
+    ;   kw(graph)
+    ->  graph_name_term(St, T),
+        group_graph_pattern(St, P),
+        { E = graph(T, P) }
     ;   tokp(word(W, Word), P),
-        { memberchk(W, [graph, service]),
+        { W == service,
           upcase_atom(Word, Up),
-          semantic_error("~w is not supported (one model, no named graphs)",
+          semantic_error("~w is not supported (no federated queries)",
                          [Up], P)
         }
     ).
+
+graph_name_term(_, var(N)) -->
+    tok(var(N)),
+    !.
+graph_name_term(St, IRI) -->
+    iri(St, IRI).
 
 peek_punct(X, S, S) :-
     S = [t(T, P)|_],
@@ -643,6 +758,8 @@ group_element(group(P), g(G, Fs), g(G1, Fs)) :-
     join_patterns(G, P, G1).
 group_element(values(Vs, Rows), g(G, Fs), g(G1, Fs)) :-
     join_patterns(G, values(Vs, Rows), G1).
+group_element(graph(T, P), g(G, Fs), g(G1, Fs)) :-
+    join_patterns(G, graph(T, P), G1).
 
 join_patterns(bgp([]), P, P) :- !.
 join_patterns(bgp(A), bgp(B), bgp(C)) :- !, append(A, B, C).
@@ -675,6 +792,7 @@ scope(minus(A, _)) --> scope(A).
 scope(filter(_, A)) --> scope(A).
 scope(extend(A, N, _)) --> scope(A), [N].
 scope(values(Vs, _)) --> list(Vs).
+scope(graph(T, P)) --> scope_node(T), scope(P).
 scope(subselect(select(Proj, _, _, _))) --> projected(Proj).
 
 scope_triples([]) --> [].
