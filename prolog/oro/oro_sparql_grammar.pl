@@ -59,7 +59,7 @@ parse_tokens(query, St, Query, Tokens) :-
 parse_tokens(expression, St, Expr, Tokens) :-
     phrase(( expression(St, Expr), tok(eof) ), Tokens).
 
-initial_state(st(Prefixes, none, counter(0), no_aggregates)) :-
+initial_state(st(Prefixes, none, counter(0, [], 0), no_aggregates)) :-
     oro_default_namespace(Default),
     findall(P-NS, oro_prefix(P, NS), Prefixes0),
     Prefixes = [''-Default|Prefixes0].
@@ -229,6 +229,7 @@ construct_query(St, construct(Template, Pattern, Mods), Dataset) -->
     ->  tok(punct('{')),
         template_triples(St, Triples),
         tok(punct('}')),
+        { forget_bnode_labels(St) },
         dataset_clauses(St, Dataset),
         where_clause(St, Pattern)
     ;   dataset_clauses(St, Dataset),
@@ -613,7 +614,9 @@ no_aggregates(st(P, B, C, _), st(P, B, C, no_aggregates)).
 		 *******************************/
 
 group_graph_pattern(St0, Pattern) -->
-    { no_aggregates(St0, St) },
+    { no_aggregates(St0, St),
+      new_bgp(St)
+    },
     tok(punct('{')),
     (   peek_kw(select)
     ->  kw(select),
@@ -640,7 +643,12 @@ group_elements(St, Elems) -->
 
 group_elements_rest(St, Elems) -->
     (   pattern_not_triples(St, E)
-    ->  { Elems = [E|Elems1] },
+    ->  { Elems = [E|Elems1],
+          (   E = filter(_)
+          ->  true
+          ;   new_bgp(St)
+          )
+        },
         (   tok(punct('.'))
         ->  []
         ;   []
@@ -898,8 +906,9 @@ graph_term(St, T) -->
     ->  []
     ;   boolean_literal(T)
     ->  []
-    ;   tok(bnode(L))
-    ->  { atom_concat('_:b_', L, N),
+    ;   tokp(bnode(L), P)
+    ->  { bnode_label_use(St, L, P),
+          atom_concat('_:b_', L, N),
           T = var(N)
         }
     ;   tok(punct('[')), tok(punct(']'))
@@ -937,6 +946,36 @@ collection_triples(St, [X|Xs], Node,
     rdf_equal(rdf:rest, Rest),
     fresh_variable(St, Node),
     collection_triples(St, Xs, Next, Triples).
+
+%   Blank node labels: a label names one blank node of one basic graph
+%   pattern, and may not be used in another (SPARQL 1.1 §19.6).  The
+%   state's counter(N, Labels, Block) holds the labels seen, each
+%   Label-Block, and the current basic graph pattern: a group, and any
+%   element of a group but a FILTER, begins a new one.
+
+new_bgp(st(_, _, Counter, _)) :-
+    arg(1, Counter, N0),
+    N is N0 + 1,
+    nb_setarg(1, Counter, N),
+    nb_setarg(3, Counter, N).
+
+bnode_label_use(st(_, _, Counter, _), Label, P) :-
+    arg(2, Counter, Labels),
+    arg(3, Counter, Block),
+    (   memberchk(Label-Block0, Labels)
+    ->  (   Block0 == Block
+        ->  true
+        ;   semantic_error("Blank node label _:~w used in two basic graph \c
+                            patterns", [Label], P)
+        )
+    ;   nb_setarg(2, Counter, [Label-Block|Labels])
+    ).
+
+%   forget_bnode_labels(+St): the labels of a CONSTRUCT template are
+%   its own: the WHERE clause may use them again.
+
+forget_bnode_labels(st(_, _, Counter, _)) :-
+    nb_setarg(2, Counter, []).
 
 fresh_variable(st(_, _, Counter, _), var(Name)) :-
     arg(1, Counter, N0),
@@ -1388,7 +1427,7 @@ function_iri(IRI, Args, P, E) :-
         ;   oro_iri_name(IRI, Name),
             semantic_error("~w takes one argument", [Name], P)
         )
-    ;   semantic_error("Unknown function <~w>", [IRI], P)
+    ;   E = fn(extension(IRI), Args)     % unknown: an error when evaluated
     ).
 
 %   Built-in calls: a keyword followed by its arguments.

@@ -132,6 +132,15 @@ punct(P) -->
     }.
 
 iri_codes([C|Cs]) -->
+    "\\",
+    (   "u"
+    ->  hex_digits(4, C)
+    ;   "U",
+        hex_digits(8, C)
+    ),
+    !,
+    iri_codes(Cs).
+iri_codes([C|Cs]) -->
     [C],
     { C > 0x20,
       \+ memberchk(C, `<>"{}|^\`\\`)
@@ -150,10 +159,18 @@ varname_rest([C|Cs]) -->
     varname_rest(Cs).
 varname_rest([]) --> [].
 
+%   var_char(+C): a character of PN_CHARS (and of VARNAME after its
+%   first): letters, digits, `_`, U+00B7, the combining diacritical
+%   marks U+0300..U+036F and U+203F..U+2040.
+
 var_char(C) :-
     (   code_type(C, csym)
     ->  true
     ;   C == 0xB7
+    ->  true
+    ;   between(0x0300, 0x036F, C)
+    ->  true
+    ;   between(0x203F, 0x2040, C)
     ).
 
 word_rest([C|Cs]) -->

@@ -1,0 +1,83 @@
+:- module(w3c_sparql_known, [w3c_known_failure/3]).
+
+/** <module> The W3C SPARQL tests that fail today, and why
+
+w3c_known_failure(Category, Name, Reason): the test Name of Category
+(folder of ../shared/w3c-sparql) fails through the endpoint, for
+Reason.  test_w3c_sparql fails when a test outside this list fails, or
+when a listed one passes: keep it, and the README's table, in step.
+*/
+
+
+w3c_known_failure('sparql10/basic', 'Basic - Quotes 3', "not analysed yet: an extra row").
+w3c_known_failure('sparql10/basic', 'Basic - Term 8', "not analysed yet: no rows").
+w3c_known_failure('sparql10/cast', 'Cast to xsd:dateTime', "xsd:dateTime casts are not implemented").
+w3c_known_failure('sparql10/cast', 'Cast to xsd:decimal', "not analysed yet: casts keep rows XSD rejects").
+w3c_known_failure('sparql10/cast', 'Cast to xsd:double', "not analysed yet: casts keep rows XSD rejects").
+w3c_known_failure('sparql10/cast', 'Cast to xsd:float', "not analysed yet: casts keep rows XSD rejects").
+w3c_known_failure('sparql10/distinct', 'All: Distinct', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/distinct', 'Numbers: Distinct', "as All: Distinct").
+w3c_known_failure('sparql10/expr-builtin', 'lang-3 : Graph matching with lang tag being a different case', "\"string\"@EN in a pattern: rdf_db matches language tags as stored").
+w3c_known_failure('sparql10/expr-builtin', 'sameTerm-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/expr-builtin', 'sameTerm-not-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/expr-builtin', 'sameTerm-simple', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/expr-builtin', 'str-1', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/expr-builtin', 'str-2', "not analysed yet (probably rdf_db reading numeric literals by value)").
+w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric constant in a pattern matches by value in rdf_db (\"01\"^^xsd:integer matches 1), not as an RDF term").
+w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
+w3c_known_failure('sparql10/expr-equals', 'Equality 1-3 -- graph', "as Equality 1-1 -- graph").
+w3c_known_failure('sparql10/expr-equals', 'Equality 1-4 -- graph', "as Equality 1-1 -- graph").
+w3c_known_failure('sparql10/expr-equals', 'Equality with dateTime', "xsd:dateTime compared with xsd:date gives a value, not a type error").
+w3c_known_failure('sparql10/graph', 'graph-optional', "not analysed yet: GRAPH ?g whose pattern binds ?g itself").
+w3c_known_failure('sparql10/graph', 'graph-variable-join', "not analysed yet: GRAPH ?g joined with ?g bound outside").
+w3c_known_failure('sparql10/open-world', 'date-2', "xsd:date compared with xsd:dateTime instead of a type error").
+w3c_known_failure('sparql10/open-world', 'date-3', "xsd:date compared with xsd:dateTime instead of a type error").
+w3c_known_failure('sparql10/open-world', 'open-cmp-01', "xsd:dateTime compared with xsd:date instead of a type error").
+w3c_known_failure('sparql10/open-world', 'open-cmp-02', "not analysed yet: comparisons of unknown datatypes").
+w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: literals of other datatypes compared").
+w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
+w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").
+w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
+w3c_known_failure('sparql10/optional-filter', 'dawg-optional-filter-005-not-simplified', "a FILTER inside an OPTIONAL's group sees variables of the outer group").
+w3c_known_failure('sparql10/regex', 'REGEX with [] expression', "regular expressions on strings with newlines: PCRE flags differ from XPath").
+w3c_known_failure('sparql10/regex', 'REGEX with ^ and $ and m option', "PCRE multi-line flag differs from XPath").
+w3c_known_failure('sparql10/regex', 'REGEX with a [^] expression', "PCRE and XPath differ on newlines in character classes").
+w3c_known_failure('sparql10/regex', 'REGEX with an . operator and the s option', "PCRE dot-all flag differs from XPath").
+w3c_known_failure('sparql10/regex', 'REGEX with the ignore spacing (x) option with class expression', "PCRE extended flag differs from XPath").
+w3c_known_failure('sparql11/aggregates', 'AVG with empty group (value defined to be 0)', "AVG of an empty group is unbound instead of 0").
+w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
+w3c_known_failure('sparql11/aggregates', 'SUM', "SUM of decimals computed in floating point (11.100000000000001)").
+w3c_known_failure('sparql11/cast', 'xsd:string cast', "xsd:string cast of an IRI keeps the datatype in the result").
+w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
+w3c_known_failure('sparql11/exists', 'GRAPH variable inside of EXISTS is bound to external variable', "not analysed yet: GRAPH ?g inside EXISTS with ?g bound outside").
+w3c_known_failure('sparql11/functions', 'BNODE()', "BNODE is not implemented").
+w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE is not implemented").
+w3c_known_failure('sparql11/functions', 'DAY()', "date/time accessor DAY is not implemented").
+w3c_known_failure('sparql11/functions', 'HOURS()', "date/time accessor HOURS is not implemented").
+w3c_known_failure('sparql11/functions', 'IRI()/URI()', "IRI() resolves a relative IRI in oro's default namespace, not against BASE").
+w3c_known_failure('sparql11/functions', 'MD5()', "hash functions (MD5) are not implemented").
+w3c_known_failure('sparql11/functions', 'MD5() over Unicode data', "hash functions (MD5) are not implemented").
+w3c_known_failure('sparql11/functions', 'MINUTES()', "date/time accessor MINUTES is not implemented").
+w3c_known_failure('sparql11/functions', 'MONTH()', "date/time accessor MONTH is not implemented").
+w3c_known_failure('sparql11/functions', 'NOW()', "NOW is not implemented").
+w3c_known_failure('sparql11/functions', 'RAND()', "RAND is not implemented").
+w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "not analysed yet: REPLACE with a captured group").
+w3c_known_failure('sparql11/functions', 'SECONDS()', "date/time accessor SECONDS is not implemented").
+w3c_known_failure('sparql11/functions', 'SHA1()', "hash functions (SHA1) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA1() on Unicode data', "hash functions (SHA1) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA256()', "hash functions (SHA256) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA256() on Unicode data', "hash functions (SHA256) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA384()', "hash functions (SHA384) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA384() on Unicode data', "hash functions (SHA384) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA512()', "hash functions (SHA512) are not implemented").
+w3c_known_failure('sparql11/functions', 'SHA512() on Unicode data', "hash functions (SHA512) are not implemented").
+w3c_known_failure('sparql11/functions', 'STRUUID() pattern match', "STRUUID is not implemented").
+w3c_known_failure('sparql11/functions', 'TIMEZONE()', "date/time accessor TIMEZONE is not implemented").
+w3c_known_failure('sparql11/functions', 'TZ()', "date/time accessor TZ is not implemented").
+w3c_known_failure('sparql11/functions', 'UUID() pattern match', "UUID is not implemented").
+w3c_known_failure('sparql11/functions', 'UUID() per binding', "UUID is not implemented").
+w3c_known_failure('sparql11/functions', 'YEAR()', "date/time accessor YEAR is not implemented").
+w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
+w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").
+w3c_known_failure('sparql11/subquery', 'sq02 - Subquery within graph pattern, graph variable is bound', "not analysed yet: GRAPH ?g around a sub-select binding ?g").
+w3c_known_failure('sparql11/syntax-query', '\\u unicode codepoint escaping in literal using partial surrogate pair', "a \\u escape of a lone surrogate is accepted").
