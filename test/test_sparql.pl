@@ -706,3 +706,26 @@ test(load_refused,
     test_child_term('test/fixtures/sparql_unloadable.pl', Got).
 
 :- end_tests(sparql_engine_unloadable).
+
+:- begin_tests(sparql_decimals, [setup(test_store_testsuite)]).
+
+sq_decimal(Expr, Lex) :-
+    format(string(Q), "SELECT (~w AS ?x) WHERE {}", [Expr]),
+    oro_sparql(myself, Q, select(_, [[x-literal(type(_, Lex))]])).
+
+test(sum_exact, [true(Lex == '11.1')]) :-
+    oro_sparql(myself, "SELECT (SUM(?v) AS ?s) WHERE { VALUES ?v { 1.1 2.2 3.3 4.5 } }",
+               select(_, [[s-literal(type(_, Lex))]])).
+test(add_exact, [true(Lex == '0.3')]) :-
+    sq_decimal("0.1 + 0.2", Lex).
+test(equal_exact, [true(Lex == true)]) :-
+    sq_decimal("0.1 + 0.2 = 0.3", Lex).
+test(division_rounded, [true(Lex == '0.33333333333333333333')]) :-
+    sq_decimal("1 / 3", Lex).
+test(avg_decimal, [true(Lex == '1.5')]) :-
+    oro_sparql(myself, "SELECT (AVG(?v) AS ?a) WHERE { VALUES ?v { 1 2 } }",
+               select(_, [[a-literal(type(_, Lex))]])).
+test(negative_product, [true(Lex == '-1.5')]) :-
+    sq_decimal("-0.5 * 3", Lex).
+
+:- end_tests(sparql_decimals).

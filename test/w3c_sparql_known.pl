@@ -46,7 +46,6 @@ w3c_known_failure('sparql10/regex', 'REGEX with an . operator and the s option',
 w3c_known_failure('sparql10/regex', 'REGEX with the ignore spacing (x) option with class expression', "PCRE extended flag differs from XPath").
 w3c_known_failure('sparql11/aggregates', 'AVG with empty group (value defined to be 0)', "AVG of an empty group is unbound instead of 0").
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
-w3c_known_failure('sparql11/aggregates', 'SUM', "SUM of decimals computed in floating point (11.100000000000001)").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "xsd:string cast of an IRI keeps the datatype in the result").
 w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
 w3c_known_failure('sparql11/exists', 'GRAPH variable inside of EXISTS is bound to external variable', "not analysed yet: GRAPH ?g inside EXISTS with ?g bound outside").

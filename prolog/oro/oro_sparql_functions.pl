@@ -331,12 +331,28 @@ lexical_number(decimal, Lex, N) :-
     phrase(xsd_decimal, Codes0),
     strip_plus(Codes0, Codes1),
     decimal_codes(Codes1, Codes),
-    number_codes(N, Codes).
+    decimal_rational(Codes, N).
+
 lexical_number(float, Lex, N) :-
     lexical_double(Lex, N).
 lexical_number(double, Lex, N) :-
     lexical_double(Lex, N).
 
+%   decimal_rational(+Codes, -N): xsd:decimal values are exact: N is
+%   an integer or a rational number (1.1 is 11r10), so that sums and
+%   products of decimals are exact as XSD requires.
+
+decimal_rational(Codes, N) :-
+    (   Codes = [0'-|Abs]
+    ->  decimal_rational(Abs, N0),
+        N is -N0
+    ;   append(Int, [0'.|Frac], Codes)
+    ->  append(Int, Frac, Digits),
+        number_codes(Whole, Digits),
+        length(Frac, Scale),
+        N is Whole rdiv 10^Scale
+    ;   number_codes(N, Codes)
+    ).
 lexical_double('INF', N) :- !, N is inf.
 lexical_double('+INF', N) :- !, N is inf.
 lexical_double('-INF', N) :- !, N is -inf.
@@ -516,10 +532,14 @@ compute(/, K, A, B, R) :-
     (   memberchk(K, [float, double])
     ->  R is float(A) / float(B)
     ;   B =\= 0,
-        R0 is A / B,
-        (   integer(R0)
-        ->  R = R0
-        ;   R is float(R0)
+        (   rational(A),
+            rational(B)
+        ->  R is A rdiv B
+        ;   R0 is A / B,
+            (   integer(R0)
+            ->  R = R0
+            ;   R is float(R0)
+            )
         )
     ).
 
@@ -554,6 +574,8 @@ number_term(Kind, N, Literal) :-
 decimal_lexical(N, Lex) :-
     (   integer(N)
     ->  format(atom(Lex), '~d.0', [N])
+    ;   rational(N)
+    ->  rational_lexical(N, Lex)
     ;   N =:= float_integer_part(N),
         abs(N) < 1.0e15
     ->  I is integer(N),
@@ -565,6 +587,51 @@ decimal_lexical(N, Lex) :-
         reverse(R, Codes),
         atom_codes(Lex, Codes)
     ).
+
+%   rational_lexical(+N, -Lex): the decimal digits of the rational N,
+%   exact when it has at most 30 after the point, else rounded to 20.
+
+rational_lexical(N, Lex) :-
+    (   between(1, 30, Scale),
+        Scaled is N * 10^Scale,
+        integer(Scaled)
+    ->  true
+    ;   Scale = 20,
+        Scaled is round(N * 10^Scale)
+    ),
+    Abs is abs(Scaled),
+    format(atom(Digits0), '~d', [Abs]),
+    atom_length(Digits0, Len),
+    (   Len =< Scale
+    ->  Pad is Scale - Len + 1,
+        length(Zeros, Pad),
+        maplist(=(0'0), Zeros),
+        atom_codes(ZeroAtom, Zeros),
+        atom_concat(ZeroAtom, Digits0, Digits)
+    ;   Digits = Digits0
+    ),
+    atom_length(Digits, DLen),
+    IntLen is DLen - Scale,
+    sub_atom(Digits, 0, IntLen, _, IntPart),
+    sub_atom(Digits, IntLen, Scale, 0, FracPart0),
+    atom_codes(FracPart0, FCodes0),
+    reverse(FCodes0, RF0),
+    strip_zeros_all(RF0, RF),
+    reverse(RF, FCodes),
+    (   FCodes == []
+    ->  FracPart = '0'
+    ;   atom_codes(FracPart, FCodes)
+    ),
+    (   Scaled < 0
+    ->  Sign = '-'
+    ;   Sign = ''
+    ),
+    atomic_list_concat([Sign, IntPart, '.', FracPart], Lex).
+
+strip_zeros_all([0'0|T], R) :-
+    !,
+    strip_zeros_all(T, R).
+strip_zeros_all(R, R).
 
 strip_zeros([0'0, C|T], R) :-
     C \== 0'.,
@@ -1007,7 +1074,10 @@ aggregate_results(avg, Results, _, V) :-
     ;   foldl(sum_value, Results, integer-0, K0-Sum),
         length(Results, Count),
         promote(K0, decimal, K),
-        Avg is Sum / Count,
+        (   rational(Sum)
+        ->  Avg is Sum rdiv Count
+        ;   Avg is Sum / Count
+        ),
         number_term(K, Avg, V)
     ).
 aggregate_results(min, Results, _, V) :-
