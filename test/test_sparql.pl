@@ -729,3 +729,28 @@ test(negative_product, [true(Lex == '-1.5')]) :-
     sq_decimal("-0.5 * 3", Lex).
 
 :- end_tests(sparql_decimals).
+
+:- begin_tests(sparql_optional_scope, [setup(sq_books)]).
+
+sq_books :-
+    test_store_testsuite,
+    oro_add(myself, ["book1 title \"T1\"", "book1 price 10",
+                     "book2 title \"T2\"", "book2 price 20"]).
+
+%   A FILTER in a group nested in an OPTIONAL's group is that group's:
+%   it does not see ?t of the outer group (W3C
+%   dawg-optional-filter-005-not-simplified).
+
+test(nested_group_filter_scope, [true(Rows == [[t-T1], [t-T2]])]) :-
+    test_literal(xsd:string, 'T1', T1),
+    test_literal(xsd:string, 'T2', T2),
+    oro_sparql(myself, "SELECT ?t ?p WHERE { ?b oro:title ?t OPTIONAL { { ?b oro:price ?p FILTER(?t = \"T2\") } } } ORDER BY ?t",
+               select(_, Rows)).
+test(optional_filter_sees_outer, [true(Rows == [[t-T1], [t-T2, p-P]])]) :-
+    test_literal(xsd:string, 'T1', T1),
+    test_literal(xsd:string, 'T2', T2),
+    oro_sparql(myself, "SELECT ?t ?p WHERE { ?b oro:title ?t OPTIONAL { ?b oro:price ?p FILTER(?t = \"T2\") } } ORDER BY ?t",
+               select(_, Rows)),
+    Rows = [_, [_, p-P]].
+
+:- end_tests(sparql_optional_scope).

@@ -38,7 +38,6 @@ w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: litera
 w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
-w3c_known_failure('sparql10/optional-filter', 'dawg-optional-filter-005-not-simplified', "a FILTER inside an OPTIONAL's group sees variables of the outer group").
 w3c_known_failure('sparql10/regex', 'REGEX with [] expression', "regular expressions on strings with newlines: PCRE flags differ from XPath").
 w3c_known_failure('sparql10/regex', 'REGEX with ^ and $ and m option', "PCRE multi-line flag differs from XPath").
 w3c_known_failure('sparql10/regex', 'REGEX with a [^] expression', "PCRE and XPath differ on newlines in character classes").

@@ -763,7 +763,11 @@ group_element(bind(E, N, Pos), g(G, Fs), g(extend(G, N, E), Fs)) :-
 group_element(bgp(Ts), g(G, Fs), g(G1, Fs)) :-
     join_patterns(G, bgp(Ts), G1).
 group_element(group(P), g(G, Fs), g(G1, Fs)) :-
-    join_patterns(G, P, G1).
+    (   G == bgp([]),
+        P = filter(_, _)
+    ->  G1 = join(G, P)             % not simplified: an OPTIONAL whose
+    ;   join_patterns(G, P, G1)     % group is a group with a FILTER
+    ).                              % keeps that FILTER inside
 group_element(values(Vs, Rows), g(G, Fs), g(G1, Fs)) :-
     join_patterns(G, values(Vs, Rows), G1).
 group_element(graph(T, P), g(G, Fs), g(G1, Fs)) :-
