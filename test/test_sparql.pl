@@ -754,3 +754,20 @@ test(optional_filter_sees_outer, [true(Rows == [[t-T1], [t-T2, p-P]])]) :-
     Rows = [_, [_, p-P]].
 
 :- end_tests(sparql_optional_scope).
+
+:- begin_tests(sparql_language_tags, [setup(sq_labels)]).
+
+sq_labels :-
+    test_store_testsuite,
+    oro_add(myself, ["zork label \"Zork\"@en"]).
+
+%   Language tags are case insensitive: "Zork"@EN matches "Zork"@en,
+%   and only a tag of another language fails to (asserted triples).
+
+test(tag_case_insensitive, [true(Answers == [true, true, false])]) :-
+    findall(B, ( member(Tag, ["en", "EN", "fr"]),
+                 format(string(Q), "ASK { ?x oro:label \"Zork\"@~w }", [Tag]),
+                 oro_sparql(myself, Q, ask(B), [infer(false)])
+               ), Answers).
+
+:- end_tests(sparql_language_tags).

@@ -17,7 +17,6 @@ w3c_known_failure('sparql10/cast', 'Cast to xsd:double', "not analysed yet: cast
 w3c_known_failure('sparql10/cast', 'Cast to xsd:float', "not analysed yet: casts keep rows XSD rejects").
 w3c_known_failure('sparql10/distinct', 'All: Distinct', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/distinct', 'Numbers: Distinct', "as All: Distinct").
-w3c_known_failure('sparql10/expr-builtin', 'lang-3 : Graph matching with lang tag being a different case', "\"string\"@EN in a pattern: rdf_db matches language tags as stored").
 w3c_known_failure('sparql10/expr-builtin', 'sameTerm-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/expr-builtin', 'sameTerm-not-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/expr-builtin', 'sameTerm-simple', "not analysed yet (probably rdf_db reading numeric literals by value)").

@@ -558,17 +558,40 @@ triple(ctx(ds(Source, _), _, _, _), S, P, O) :-
 
 source_triple(asserted(Model), S, P, O) :-
     !,
-    distinct(t(S, P, O), oro_asserted(Model, S, P, O)).
+    stored_object(O, O1, Test),
+    distinct(t(S, P, O1), oro_asserted(Model, S, P, O1)),
+    call(Test).
 source_triple(graphs(Graphs), S, P, O) :-
     !,
+    stored_object(O, O1, Test),
     (   Graphs = [Graph]
-    ->  rdf(S, P, O, Graph)
-    ;   distinct(t(S, P, O), ( member(Graph, Graphs),
-                               rdf(S, P, O, Graph)
-                             ))
-    ).
+    ->  rdf(S, P, O1, Graph)
+    ;   distinct(t(S, P, O1), ( member(Graph, Graphs),
+                                rdf(S, P, O1, Graph)
+                              ))
+    ),
+    call(Test).
 source_triple(Model, S, P, O) :-
     oro_holds(Model, S, P, O).
+
+%   stored_object(+O, -Pattern, -Test): language tags are case
+%   insensitive (RDF 1.1): a language-tagged constant "x"@EN matches the
+%   stored "x"@en; rdf_db compares tags as they are written.
+
+stored_object(O, Pattern, Test) :-
+    (   nonvar(O),
+        O = literal(lang(Lang, Lex)),
+        atom(Lang)
+    ->  Pattern = literal(lang(Stored, Lex)),
+        Test = same_language(Lang, Stored)
+    ;   Pattern = O,
+        Test = true
+    ).
+
+same_language(A, B) :-
+    atom(B),
+    downcase_atom(A, L),
+    downcase_atom(B, L).
 
 resource_or_var(X) :-
     (   var(X)
