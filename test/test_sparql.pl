@@ -771,3 +771,24 @@ test(tag_case_insensitive, [true(Answers == [true, true, false])]) :-
                ), Answers).
 
 :- end_tests(sparql_language_tags).
+
+:- begin_tests(sparql_dates, [setup(test_store_testsuite)]).
+
+sq_bool(Expr, B) :-
+    format(string(Q), "SELECT (~w AS ?x) WHERE {}", [Expr]),
+    oro_sparql(myself, Q, select(_, [Row])),
+    (   Row = [x-literal(type(_, B))]
+    ->  true
+    ;   B = error                       % unbound: an expression error
+    ).
+
+test(midnight_24, [true(B == true)]) :-
+    sq_bool("\"2002-10-10T24:00:00Z\"^^xsd:dateTime = \"2002-10-11T00:00:00Z\"^^xsd:dateTime", B).
+test(datetime_order, [true(B == true)]) :-
+    sq_bool("\"2002-10-10T12:00:00Z\"^^xsd:dateTime < \"2002-10-10T24:00:00Z\"^^xsd:dateTime", B).
+test(date_vs_datetime_is_error, [true(B == error)]) :-
+    sq_bool("\"2006-08-23\"^^xsd:date = \"2006-08-23T00:00:00Z\"^^xsd:dateTime", B).
+test(date_vs_date, [true(B == true)]) :-
+    sq_bool("\"2006-08-23\"^^xsd:date < \"2006-08-24\"^^xsd:date", B).
+
+:- end_tests(sparql_dates).

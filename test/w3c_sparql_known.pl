@@ -26,13 +26,10 @@ w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric co
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-3 -- graph', "as Equality 1-1 -- graph").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-4 -- graph', "as Equality 1-1 -- graph").
-w3c_known_failure('sparql10/expr-equals', 'Equality with dateTime', "xsd:dateTime compared with xsd:date gives a value, not a type error").
 w3c_known_failure('sparql10/graph', 'graph-optional', "not analysed yet: GRAPH ?g whose pattern binds ?g itself").
 w3c_known_failure('sparql10/graph', 'graph-variable-join', "not analysed yet: GRAPH ?g joined with ?g bound outside").
 w3c_known_failure('sparql10/open-world', 'date-2', "xsd:date compared with xsd:dateTime instead of a type error").
 w3c_known_failure('sparql10/open-world', 'date-3', "xsd:date compared with xsd:dateTime instead of a type error").
-w3c_known_failure('sparql10/open-world', 'open-cmp-01', "xsd:dateTime compared with xsd:date instead of a type error").
-w3c_known_failure('sparql10/open-world', 'open-cmp-02', "not analysed yet: comparisons of unknown datatypes").
 w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").

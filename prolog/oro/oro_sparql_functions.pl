@@ -264,7 +264,8 @@ ebv_class(invalid(T, _), false) :-
 %!  value_class(+Term, -Class) is semidet.
 %
 %   Class is the value of the literal Term for comparisons:
-%   number(Kind, N), string(S, Lang), boolean(B), datetime(T), ...
+%   number(Kind, N), string(S, Lang), boolean(B), datetime(Type, T)
+%   (an xsd:dateTime and an xsd:date are not comparable), ...
 
 value_class(literal(V), C) :-
     !,
@@ -292,8 +293,8 @@ literal_class(type(T, Lex0), C) :-
         ;   C = invalid(T, Lex)
         )
     ;   date_type(T)
-    ->  (   catch(parse_time(Lex, iso_8601, Stamp), _, fail)
-        ->  C = datetime(Stamp)
+    ->  (   date_stamp(Lex, Stamp)
+        ->  C = datetime(T, Stamp)
         ;   C = invalid(T, Lex)
         )
     ;   C = typed(T, Lex)
@@ -312,6 +313,19 @@ lexical_atom(X, A) :-
     (   atom(X)
     ->  A = X
     ;   format(atom(A), '~w', [X])
+    ).
+
+%   date_stamp(+Lex, -Stamp): the time stamp of an xsd:dateTime or
+%   xsd:date; 24:00:00 is midnight of the next day (XSD 1.1).
+
+date_stamp(Lex, Stamp) :-
+    (   sub_atom(Lex, B, _, A, 'T24:00:00')
+    ->  sub_atom(Lex, 0, B, _, Day),
+        sub_atom(Lex, _, A, 0, Rest),
+        atomic_list_concat([Day, 'T00:00:00', Rest], Lex1),
+        catch(parse_time(Lex1, iso_8601, Stamp0), _, fail),
+        Stamp is Stamp0 + 86400
+    ;   catch(parse_time(Lex, iso_8601, Stamp), _, fail)
     ).
 
 boolean_lexical(true, true).
@@ -453,7 +467,7 @@ equal_terms(A, B, R) :-
 equal_class(number(_, X), number(_, Y), R) :- !, truth_of(X =:= Y, R).
 equal_class(string(X, _), string(Y, _), R) :- !, truth_of(X == Y, R).
 equal_class(boolean(X), boolean(Y), R) :- !, truth_of(X == Y, R).
-equal_class(datetime(X), datetime(Y), R) :- !, truth_of(X =:= Y, R).
+equal_class(datetime(T, X), datetime(T, Y), R) :- !, truth_of(X =:= Y, R).
 equal_class(lang(X, TX), lang(Y, TY), R) :-
     !,
     downcase_atom(TX, LX),
@@ -485,7 +499,7 @@ truth_of(Goal, R) :-
 order_class(number(_, X), number(_, Y), O) :- !, number_order(X, Y, O).
 order_class(string(X, _), string(Y, _), O) :- !, compare(O, X, Y).
 order_class(boolean(X), boolean(Y), O) :- !, compare(O, X, Y).
-order_class(datetime(X), datetime(Y), O) :- !, number_order(X, Y, O).
+order_class(datetime(T, X), datetime(T, Y), O) :- !, number_order(X, Y, O).
 
 number_order(X, Y, O) :-
     (   X < Y
