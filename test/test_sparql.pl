@@ -792,3 +792,27 @@ test(date_vs_date, [true(B == true)]) :-
     sq_bool("\"2006-08-23\"^^xsd:date < \"2006-08-24\"^^xsd:date", B).
 
 :- end_tests(sparql_dates).
+
+:- begin_tests(sparql_hash_date_functions, [setup(test_store_testsuite)]).
+
+sq_values(Select, Values) :-
+    format(string(Q), "SELECT ~w WHERE { BIND(\"2010-12-21T15:38:02.5-08:00\"^^xsd:dateTime AS ?d) BIND(\"2011-02-01T01:02:03\"^^xsd:dateTime AS ?n) }", [Select]),
+    oro_sparql(myself, Q, select(_, [Row])),
+    pairs_values(Row, Values).
+
+test(hashes, [true(Values == [literal('900150983cd24fb0d6963f7d28e17f72'),
+                              literal(a9993e364706816aba3e25717850c26c9cd0d89d),
+                              literal(ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad)])]) :-
+    sq_values("(MD5(\"abc\") AS ?a) (SHA1(\"abc\") AS ?b) (SHA256(\"abc\") AS ?c)", Values).
+test(hash_of_language_string_is_error, [true(Values == [])]) :-
+    sq_values("(MD5(\"abc\"@en) AS ?a)", Values).
+test(date_fields, [true(Lexes == ['2010', '12', '21', '15', '38', '2.5', '-PT8H'])]) :-
+    sq_values("(YEAR(?d) AS ?y) (MONTH(?d) AS ?mo) (DAY(?d) AS ?da) (HOURS(?d) AS ?h) (MINUTES(?d) AS ?mi) (SECONDS(?d) AS ?s) (TIMEZONE(?d) AS ?z)",
+              Values),
+    findall(L, member(literal(type(_, L)), Values), Lexes).
+test(tz, [true(Values == [literal('-08:00'), literal('')])]) :-
+    sq_values("(TZ(?d) AS ?a) (TZ(?n) AS ?b)", Values).
+test(timezone_without_zone_is_error, [true(Values == [])]) :-
+    sq_values("(TIMEZONE(?n) AS ?a)", Values).
+
+:- end_tests(sparql_hash_date_functions).

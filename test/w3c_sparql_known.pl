@@ -46,31 +46,13 @@ w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "n
 w3c_known_failure('sparql11/exists', 'GRAPH variable inside of EXISTS is bound to external variable', "not analysed yet: GRAPH ?g inside EXISTS with ?g bound outside").
 w3c_known_failure('sparql11/functions', 'BNODE()', "BNODE is not implemented").
 w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE is not implemented").
-w3c_known_failure('sparql11/functions', 'DAY()', "date/time accessor DAY is not implemented").
-w3c_known_failure('sparql11/functions', 'HOURS()', "date/time accessor HOURS is not implemented").
 w3c_known_failure('sparql11/functions', 'IRI()/URI()', "IRI() resolves a relative IRI in oro's default namespace, not against BASE").
-w3c_known_failure('sparql11/functions', 'MD5()', "hash functions (MD5) are not implemented").
-w3c_known_failure('sparql11/functions', 'MD5() over Unicode data', "hash functions (MD5) are not implemented").
-w3c_known_failure('sparql11/functions', 'MINUTES()', "date/time accessor MINUTES is not implemented").
-w3c_known_failure('sparql11/functions', 'MONTH()', "date/time accessor MONTH is not implemented").
 w3c_known_failure('sparql11/functions', 'NOW()', "NOW is not implemented").
 w3c_known_failure('sparql11/functions', 'RAND()', "RAND is not implemented").
 w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "not analysed yet: REPLACE with a captured group").
-w3c_known_failure('sparql11/functions', 'SECONDS()', "date/time accessor SECONDS is not implemented").
-w3c_known_failure('sparql11/functions', 'SHA1()', "hash functions (SHA1) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA1() on Unicode data', "hash functions (SHA1) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA256()', "hash functions (SHA256) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA256() on Unicode data', "hash functions (SHA256) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA384()', "hash functions (SHA384) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA384() on Unicode data', "hash functions (SHA384) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA512()', "hash functions (SHA512) are not implemented").
-w3c_known_failure('sparql11/functions', 'SHA512() on Unicode data', "hash functions (SHA512) are not implemented").
 w3c_known_failure('sparql11/functions', 'STRUUID() pattern match', "STRUUID is not implemented").
-w3c_known_failure('sparql11/functions', 'TIMEZONE()', "date/time accessor TIMEZONE is not implemented").
-w3c_known_failure('sparql11/functions', 'TZ()', "date/time accessor TZ is not implemented").
 w3c_known_failure('sparql11/functions', 'UUID() pattern match', "UUID is not implemented").
 w3c_known_failure('sparql11/functions', 'UUID() per binding', "UUID is not implemented").
-w3c_known_failure('sparql11/functions', 'YEAR()', "date/time accessor YEAR is not implemented").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").
 w3c_known_failure('sparql11/subquery', 'sq02 - Subquery within graph pattern, graph variable is bound', "not analysed yet: GRAPH ?g around a sub-select binding ?g").

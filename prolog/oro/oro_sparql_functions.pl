@@ -12,6 +12,8 @@
 :- use_module(library(apply)).
 :- use_module(library(uri)).
 :- use_module(library(date)).
+:- use_module(library(sha), [sha_hash/3, hash_atom/2]).
+:- use_module(library(md5), [md5_hash/3]).
 :- use_module(oro_names).
 :- if(exists_source(library(pcre))).
 :- use_module(library(pcre)).
@@ -707,6 +709,20 @@ function(isliteral, [X], V) :-
 function(isnumeric, [X], V) :-
     truth_of(numeric(X, _, _), R),
     boolean_term(R, V).
+function(md5, [X], literal(Hex)) :-
+    simple_string(X, Lex),
+    md5_hash(Lex, Hex, [encoding(utf8)]).
+function(Name, [X], literal(Hex)) :-
+    sha_algorithm(Name, Algorithm),
+    !,
+    simple_string(X, Lex),
+    sha_hash(Lex, Hash, [algorithm(Algorithm), encoding(utf8)]),
+    hash_atom(Hash, Hex).
+function(Field, [X], V) :-
+    date_field(Field),
+    !,
+    date_time_parts(X, Parts),
+    date_field_value(Field, Parts, V).
 function(sameterm, [X, Y], V) :-
     truth_of(X == Y, R),
     boolean_term(R, V).
@@ -991,6 +1007,89 @@ cast_number(decimal, N0, N) :-
     N = N0.
 cast_number(_, N0, N) :-
     N is float(N0).
+
+sha_algorithm(sha1, sha1).
+sha_algorithm(sha256, sha256).
+sha_algorithm(sha384, sha384).
+sha_algorithm(sha512, sha512).
+
+%   The accessors of xsd:dateTime values: YEAR, MONTH, DAY, HOURS,
+%   MINUTES (integers), SECONDS (a decimal), TIMEZONE (an
+%   xsd:dayTimeDuration; an error without a time zone) and TZ (the
+%   time zone as written, "" without one), read from the lexical form.
+
+date_field(year).
+date_field(month).
+date_field(day).
+date_field(hours).
+date_field(minutes).
+date_field(seconds).
+date_field(timezone).
+date_field(tz).
+
+%   date_time_parts(+Term, -Parts): Parts is dt(Y, Mo, D, H, Mi, S, TZ)
+%   of an xsd:dateTime literal, S an atom, TZ an atom ('' for none).
+
+date_time_parts(literal(type(T, Lex0)), dt(Y, Mo, D, H, Mi, S, TZ)) :-
+    rdf_equal(xsd:dateTime, T),
+    lexical_atom(Lex0, Lex),
+    sub_atom(Lex, Before, 1, _, 'T'),
+    !,
+    sub_atom(Lex, 0, Before, _, Date),
+    After is Before + 1,
+    sub_atom(Lex, After, _, 0, Time0),
+    (   sub_atom(Time0, _, 1, 0, 'Z')
+    ->  TZ = 'Z',
+        sub_atom(Time0, 0, _, 1, Time)
+    ;   sub_atom(Time0, B, 6, 0, TZ0),
+        sub_atom(TZ0, 0, 1, _, Sign),
+        memberchk(Sign, [+, -])
+    ->  TZ = TZ0,
+        sub_atom(Time0, 0, B, _, Time)
+    ;   TZ = '',
+        Time = Time0
+    ),
+    atomic_list_concat([YA, MoA, DA], -, Date),
+    atomic_list_concat([HA, MiA, S], :, Time),
+    maplist(atom_number, [YA, MoA, DA, HA, MiA], [Y, Mo, D, H, Mi]).
+
+date_field_value(year, dt(Y, _, _, _, _, _, _), V) :-
+    number_term(integer, Y, V).
+date_field_value(month, dt(_, Mo, _, _, _, _, _), V) :-
+    number_term(integer, Mo, V).
+date_field_value(day, dt(_, _, D, _, _, _, _), V) :-
+    number_term(integer, D, V).
+date_field_value(hours, dt(_, _, _, H, _, _, _), V) :-
+    number_term(integer, H, V).
+date_field_value(minutes, dt(_, _, _, _, Mi, _, _), V) :-
+    number_term(integer, Mi, V).
+date_field_value(seconds, dt(_, _, _, _, _, S, _), V) :-
+    lexical_number(decimal, S, N),
+    number_term(decimal, N, V).
+date_field_value(tz, dt(_, _, _, _, _, _, TZ), literal(TZ)).
+date_field_value(timezone, dt(_, _, _, _, _, _, TZ), literal(type(T, Duration))) :-
+    TZ \== '',
+    rdf_equal(xsd:dayTimeDuration, T),
+    (   TZ == 'Z'
+    ->  Duration = 'PT0S'
+    ;   sub_atom(TZ, 0, 1, _, Sign),
+        sub_atom(TZ, 1, 2, _, HA),
+        sub_atom(TZ, 4, 2, _, MA),
+        atom_number(HA, H),
+        atom_number(MA, M),
+        (   Sign == (-)
+        ->  Prefix = '-PT'
+        ;   Prefix = 'PT'
+        ),
+        (   H =:= 0, M =:= 0
+        ->  Duration = 'PT0S'
+        ;   M =:= 0
+        ->  format(atom(Duration), '~w~dH', [Prefix, H])
+        ;   H =:= 0
+        ->  format(atom(Duration), '~w~dM', [Prefix, M])
+        ;   format(atom(Duration), '~w~dH~dM', [Prefix, H, M])
+        )
+    ).
 
 %   Regular expressions (XPath syntax, run by PCRE).
 

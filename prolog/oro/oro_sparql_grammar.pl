@@ -1550,4 +1550,17 @@ function_arity(round, 1, 1).
 function_arity(if, 3, 3).
 function_arity(coalesce, 0, inf).
 function_arity(sameterm, 2, 2).
+function_arity(year, 1, 1).
+function_arity(month, 1, 1).
+function_arity(day, 1, 1).
+function_arity(hours, 1, 1).
+function_arity(minutes, 1, 1).
+function_arity(seconds, 1, 1).
+function_arity(timezone, 1, 1).
+function_arity(tz, 1, 1).
+function_arity(md5, 1, 1).
+function_arity(sha1, 1, 1).
+function_arity(sha256, 1, 1).
+function_arity(sha384, 1, 1).
+function_arity(sha512, 1, 1).
 
