@@ -816,3 +816,22 @@ test(timezone_without_zone_is_error, [true(Values == [])]) :-
     sq_values("(TIMEZONE(?n) AS ?a)", Values).
 
 :- end_tests(sparql_hash_date_functions).
+
+:- begin_tests(sparql_fresh_values, [setup(test_store_testsuite)]).
+
+%   NOW() is one value for the whole query; RAND(), UUID(), STRUUID()
+%   and BNODE() are new at each call.
+
+test(now_rand_uuid_bnode, [true(Answer == [1, 2, 2, 2, 2])]) :-
+    oro_sparql(myself, "SELECT (NOW() AS ?n) (RAND() AS ?r) (UUID() AS ?u) (STRUUID() AS ?s) (BNODE() AS ?b) WHERE { VALUES ?x { 1 2 } }",
+               select(_, Rows)),
+    findall(N, ( member(V, [n, r, u, s, b]),
+                 findall(X, ( member(Row, Rows), memberchk(V-X, Row) ), Xs),
+                 sort(Xs, Set),
+                 length(Set, N)
+               ), Answer).
+test(uuid_is_urn, [true(Prefix == 'urn:uuid:')]) :-
+    oro_sparql(myself, "SELECT (UUID() AS ?u) WHERE {}", select(_, [[u-U]])),
+    sub_atom(U, 0, 9, _, Prefix).
+
+:- end_tests(sparql_fresh_values).

@@ -14,6 +14,7 @@
 :- use_module(library(date)).
 :- use_module(library(sha), [sha_hash/3, hash_atom/2]).
 :- use_module(library(md5), [md5_hash/3]).
+:- use_module(library(uuid), [uuid/2]).
 :- use_module(oro_names).
 :- if(exists_source(library(pcre))).
 :- use_module(library(pcre)).
@@ -709,6 +710,20 @@ function(isliteral, [X], V) :-
 function(isnumeric, [X], V) :-
     truth_of(numeric(X, _, _), R),
     boolean_term(R, V).
+function(now, [], literal(type(T, Lex))) :-
+    rdf_equal(xsd:dateTime, T),
+    get_time(Now),
+    format_time(atom(Lex), '%FT%T.%3f%:z', Now).
+function(rand, [], V) :-
+    X is random_float,
+    number_term(double, X, V).
+function(uuid, [], IRI) :-
+    uuid(UUID, [version(4)]),
+    atom_concat('urn:uuid:', UUID, IRI).
+function(struuid, [], literal(UUID)) :-
+    uuid(UUID, [version(4)]).
+function(bnode, [], BNode) :-
+    rdf_bnode(BNode).
 function(md5, [X], literal(Hex)) :-
     simple_string(X, Lex),
     md5_hash(Lex, Hex, [encoding(utf8)]).

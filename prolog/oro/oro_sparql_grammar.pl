@@ -1563,4 +1563,9 @@ function_arity(sha1, 1, 1).
 function_arity(sha256, 1, 1).
 function_arity(sha384, 1, 1).
 function_arity(sha512, 1, 1).
+function_arity(now, 0, 0).
+function_arity(rand, 0, 0).
+function_arity(uuid, 0, 0).
+function_arity(struuid, 0, 0).
+function_arity(bnode, 0, 0).
 
