@@ -835,3 +835,14 @@ test(uuid_is_urn, [true(Prefix == 'urn:uuid:')]) :-
     sub_atom(U, 0, 9, _, Prefix).
 
 :- end_tests(sparql_fresh_values).
+
+:- begin_tests(sparql_iri_function, [setup(test_store_testsuite)]).
+
+test(iri_against_base, [true(IRIs == ['http://example.org/a', 'http://example.org/b'])]) :-
+    oro_sparql(myself, "BASE <http://example.org/> SELECT (IRI(\"a\") AS ?i) (URI(\"b\") AS ?u) WHERE {}",
+               select(_, [[i-I, u-U]])),
+    IRIs = [I, U].
+test(iri_default_namespace, [true(I == 'http://kb.openrobots.org#a')]) :-
+    oro_sparql(myself, "SELECT (IRI(\"a\") AS ?i) WHERE {}", select(_, [[i-I]])).
+
+:- end_tests(sparql_iri_function).

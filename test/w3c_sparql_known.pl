@@ -45,7 +45,6 @@ w3c_known_failure('sparql11/cast', 'xsd:string cast', "xsd:string cast of an IRI
 w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
 w3c_known_failure('sparql11/exists', 'GRAPH variable inside of EXISTS is bound to external variable', "not analysed yet: GRAPH ?g inside EXISTS with ?g bound outside").
 w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE(str) is not implemented (BNODE() is)").
-w3c_known_failure('sparql11/functions', 'IRI()/URI()', "IRI() resolves a relative IRI in oro's default namespace, not against BASE").
 w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "not analysed yet: REPLACE with a captured group").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").

@@ -191,6 +191,7 @@ foldable(not(_)).
 constant_argument(const(_)) :- !.
 constant_argument(Name) :- atom(Name), !.
 constant_argument(cast(_)) :- !.
+constant_argument(iri(_)) :- !.
 constant_argument(Args) :-
     is_list(Args),
     forall(member(A, Args), A = const(_)).

@@ -692,10 +692,8 @@ function(datatype, [literal(L)], T) :-
     ->  rdf_equal(rdf:langString, T)
     ;   rdf_equal(xsd:string, T)
     ).
-function(iri, [X], IRI) :-
-    to_iri(X, IRI).
-function(uri, [X], IRI) :-
-    to_iri(X, IRI).
+function(iri(Base), [X], IRI) :-
+    to_iri(X, Base, IRI).
 function(isiri, [X], V) :-
     truth_of(( atom(X), \+ rdf_is_bnode(X) ), R),
     boolean_term(R, V).
@@ -888,7 +886,11 @@ literal_lexical(literal(L), Lex) :-
     ),
     lexical_atom(Lex0, Lex).
 
-to_iri(X, IRI) :-
+%   to_iri(+X, +Base, -IRI): IRI() of X: a relative IRI is resolved
+%   against Base, or without BASE (`none`) is a name of oro's default
+%   namespace, as relative IRIs of the query text are.
+
+to_iri(X, Base, IRI) :-
     (   atom(X)
     ->  \+ rdf_is_bnode(X),
         IRI = X
@@ -896,6 +898,8 @@ to_iri(X, IRI) :-
         Tag \= lang(_),
         (   uri_is_global(Lex)
         ->  IRI = Lex
+        ;   Base \== none
+        ->  uri_resolve(Lex, Base, IRI)
         ;   oro_default_namespace(NS),
             atom_concat(NS, Lex, IRI)
         )

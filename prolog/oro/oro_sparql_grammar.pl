@@ -1480,7 +1480,7 @@ builtin(Name, Word, P, St, agg(Name, Distinct, Arg, Sep)) -->
     ;   { Sep = ' ' }
     ),
     tok(punct(')')).
-builtin(Name, Word, P, St, fn(Name, Args)) -->
+builtin(Name, Word, P, St, Function) -->
     { function_arity(Name, Min, Max) },
     !,
     expression_list(St, Args),
@@ -1490,8 +1490,19 @@ builtin(Name, Word, P, St, fn(Name, Args)) -->
       ->  true
       ;   upcase_atom(Word, Up),
           semantic_error("Wrong number of arguments (~d) for ~w", [N, Up], P)
-      )
+      ),
+      based_function(Name, St, Args, Function)
     }.
+
+%   based_function(+Name, +St, +Args, -Function): IRI() and URI() resolve
+%   a relative IRI against the query's BASE: they become
+%   fn(iri(Base), Args), Base `none` without BASE.
+
+based_function(Name, st(_, Base, _, _), Args, Function) :-
+    (   memberchk(Name, [iri, uri])
+    ->  Function = fn(iri(Base), Args)
+    ;   Function = fn(Name, Args)
+    ).
 builtin(Name, Word, P, _, _) -->
     peek_punct('('),
     { \+ keyword(Name),
