@@ -252,9 +252,12 @@ ensure_loaded_data(File) :-
 %   as default-graph-uri and named-graph-uri; a query without data and
 %   without FROM gets an empty default graph.
 
-dataset_params(_, [], [], Params) :-
+dataset_params(Query, [], [], Params) :-
     !,
-    Params = [].
+    (   re_match("\\bFROM\\b"/i, Query)
+    ->  Params = []
+    ;   Params = ['default-graph-uri'='urn:oro:w3c:empty']
+    ).
 dataset_params(_, Data, GraphData, Params) :-
     findall('default-graph-uri'=U, member(U, Data), P1),
     findall('named-graph-uri'=U, member(U, GraphData), P2),

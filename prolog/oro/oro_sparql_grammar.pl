@@ -1494,6 +1494,13 @@ builtin(Name, Word, P, St, Function) -->
       based_function(Name, St, Args, Function)
     }.
 
+builtin(Name, Word, P, _, _) -->
+    peek_punct('('),
+    { \+ keyword(Name),
+      upcase_atom(Word, Up),
+      semantic_error("Unknown or unsupported function ~w", [Up], P)
+    }.
+
 %   based_function(+Name, +St, +Args, -Function): IRI() and URI() resolve
 %   a relative IRI against the query's BASE: they become
 %   fn(iri(Base), Args), Base `none` without BASE.
@@ -1503,12 +1510,6 @@ based_function(Name, st(_, Base, _, _), Args, Function) :-
     ->  Function = fn(iri(Base), Args)
     ;   Function = fn(Name, Args)
     ).
-builtin(Name, Word, P, _, _) -->
-    peek_punct('('),
-    { \+ keyword(Name),
-      upcase_atom(Word, Up),
-      semantic_error("Unknown or unsupported function ~w", [Up], P)
-    }.
 
 keyword(Name) :-
     memberchk(Name, [ select, ask, construct, describe, where, from, named,
