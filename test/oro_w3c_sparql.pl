@@ -300,7 +300,7 @@ expected(File, Result) :-
     expected(Ext, File, Result).
 
 expected(srx, File, Result) :-
-    load_xml(File, DOM, [space(remove), dialect(xmlns)]),
+    load_xml(File, DOM, [space(preserve), dialect(xmlns)]),   % literals keep newlines
     srx_result(DOM, Result).
 expected(srj, File, Result) :-
     setup_call_cleanup(open(File, read, In, [encoding(utf8)]),
@@ -336,7 +336,9 @@ srx_result(DOM, Result) :-
         findall(V, member(element(_:variable, [name=V], _), Head), Vars),
         member(element(_:results, _, Results), Content),
         findall(Row, ( member(element(_:result, _, Bs), Results),
-                       findall(N-T, ( member(element(_:binding, [name=N], [E]), Bs),
+                       findall(N-T, ( member(element(_:binding, [name=N], Cs), Bs),
+                                      member(E, Cs),
+                                      E = element(_, _, _),
                                       srx_term(E, T)
                                     ), Row0),
                        sort(Row0, Row)

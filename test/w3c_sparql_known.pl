@@ -34,11 +34,6 @@ w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: litera
 w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
-w3c_known_failure('sparql10/regex', 'REGEX with [] expression', "not analysed yet: REGEX over strings with newlines").
-w3c_known_failure('sparql10/regex', 'REGEX with ^ and $ and m option', "not analysed yet: REGEX over strings with newlines").
-w3c_known_failure('sparql10/regex', 'REGEX with a [^] expression', "not analysed yet: REGEX over strings with newlines").
-w3c_known_failure('sparql10/regex', 'REGEX with an . operator and the s option', "not analysed yet: REGEX over strings with newlines").
-w3c_known_failure('sparql10/regex', 'REGEX with the ignore spacing (x) option with class expression', "not analysed yet: REGEX over strings with newlines").
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
 w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
