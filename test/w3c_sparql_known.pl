@@ -26,8 +26,6 @@ w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric co
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-3 -- graph', "as Equality 1-1 -- graph").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-4 -- graph', "as Equality 1-1 -- graph").
-w3c_known_failure('sparql10/graph', 'graph-optional', "not analysed yet: GRAPH ?g whose pattern binds ?g itself").
-w3c_known_failure('sparql10/graph', 'graph-variable-join', "not analysed yet: GRAPH ?g joined with ?g bound outside").
 w3c_known_failure('sparql10/open-world', 'date-2', "not analysed yet: FILTER on xsd:date values").
 w3c_known_failure('sparql10/open-world', 'date-3', "not analysed yet: FILTER on xsd:date values").
 w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: literals of other datatypes compared").
@@ -37,10 +35,8 @@ w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain 
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
 w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
-w3c_known_failure('sparql11/exists', 'GRAPH variable inside of EXISTS is bound to external variable', "not analysed yet: GRAPH ?g inside EXISTS with ?g bound outside").
 w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE(str) is not implemented (BNODE() is)").
 w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "REPLACE whose pattern has a group that does not match ($2 of (ab)|(a)): re_replace/5 of SWI-Prolog 9.0.4 raises an error, so the value is unbound").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").
-w3c_known_failure('sparql11/subquery', 'sq02 - Subquery within graph pattern, graph variable is bound', "not analysed yet: GRAPH ?g around a sub-select binding ?g").
 w3c_known_failure('sparql11/syntax-query', '\\u unicode codepoint escaping in literal using partial surrogate pair', "a \\u escape of a lone surrogate is accepted").

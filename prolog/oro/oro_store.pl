@@ -40,6 +40,7 @@
 :- use_module(library(apply)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
+:- use_module(library(uri), [uri_file_name/2]).
 :- use_module(oro_persist).
 :- use_module(oro_names, [oro_local_name/2]).
 
@@ -631,7 +632,9 @@ oro_load_ontology(File) :-
                  N is N0 + 1,
                  oro_shared_graph(ontology(N), Graph),
                  oro_persist_exclude(Graph),
-                 rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
+                 uri_file_name(URL, Path),  % relative IRIs: the file's
+                 rdf_load(Path, [graph(Graph), base_uri(URL),  % not Graph's
+                                 format(Format), silent(true)]),
                  assertz(ontology_graph(Graph)),
                  index_graph_names(Graph),
                  schema_changed
