@@ -249,15 +249,17 @@ ensure_loaded_data(File) :-
     ).
 
 %   dataset_params(+Query, +Data, +GraphData, -Params): the test's data
-%   as default-graph-uri and named-graph-uri; a query without data and
-%   without FROM gets an empty default graph.
+%   as default-graph-uri and named-graph-uri, unless the query has FROM
+%   (the protocol's parameters would override it); a query without data
+%   and without FROM gets an empty default graph.
 
-dataset_params(Query, [], [], Params) :-
+dataset_params(Query, _, _, Params) :-
+    re_match("\\bFROM\\b"/i, Query),
     !,
-    (   re_match("\\bFROM\\b"/i, Query)
-    ->  Params = []
-    ;   Params = ['default-graph-uri'='urn:oro:w3c:empty']
-    ).
+    Params = [].                % the query names its dataset itself
+dataset_params(_, [], [], Params) :-
+    !,
+    Params = ['default-graph-uri'='urn:oro:w3c:empty'].
 dataset_params(_, Data, GraphData, Params) :-
     findall('default-graph-uri'=U, member(U, Data), P1),
     findall('named-graph-uri'=U, member(U, GraphData), P2),

@@ -34,7 +34,6 @@ w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: litera
 w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
-w3c_known_failure('sparql11/construct', 'constructwhere04 - CONSTRUCT WHERE', "not analysed yet: CONSTRUCT WHERE gives an empty graph").
 w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE(str) is not implemented (BNODE() is)").
 w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "REPLACE whose pattern has a group that does not match ($2 of (ab)|(a)): re_replace/5 of SWI-Prolog 9.0.4 raises an error, so the value is unbound").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
