@@ -65,6 +65,9 @@
             oro_partition/4,            % +Model, +Individuals, +Property, -Partition
             % SPARQL
             oro_sparql/3,               % +Model, +Text, -Result
+            oro_sparql/4,               % +Model, +Text, -Result, +Options
+            oro_sparql_graph/2,         % ?IRI, ?Graph
+            oro_sparql_result_text/3,   % +Format, +Result, -Text
             oro_sparql_json/3,          % +Model, +Text, -JSON
             oro_sparql_parse/2,         % +Text, -Query
             oro_query_values/4,         % +Model, +Key, +Text, -Values

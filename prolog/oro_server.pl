@@ -4,6 +4,7 @@
             oro_server_shutdown/1,      % +Server
             oro_server_port/2,          % +Server, -Port
             oro_server_connections/2,   % +Server, -Count
+            oro_server_http_port/2,     % +Server, -Port
             oro_server_kb_port/2,       % +Server, -Port
             oro_server_main/0,
             oro_server_main/1,          % +Argv
@@ -29,6 +30,7 @@
 :- use_module('../server/oro_log').
 :- use_module('../server/oro_cli').
 :- use_module(oro/oro_save, [oro_save_cancel/0]).
+:- use_module(oro/oro_http).
 
 /** <module> The ORO socket server
 
@@ -118,6 +120,10 @@ opt_type(max_connections, max_connections, positive_integer).
 opt_type(max_per_address, max_per_address, nonneg).
 opt_type(min_reply_latency, min_reply_latency, nonneg).
 opt_type(events_before_reply, events_before_reply, boolean).
+opt_type(http, http, between(0, 65535)).
+opt_type(no_http, http, boolean(false)).
+opt_type(http_host, http_host, atom).
+opt_type(http_changes, http_changes, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
    or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
@@ -173,6 +179,11 @@ Options:
                      own watchers just before its reply (same write)
                      instead of just after: liboro then never loses its
                      connection over them (README, Clients)
+  --http=PORT        Serve SPARQL and Pengines over HTTP on PORT
+                     (default 6970; 0 picks a free one)
+  --no-http          No HTTP side
+  --http-host=ADDR   Address of the HTTP side (default 127.0.0.1)
+  --http-changes     Let Pengines clients change the store (default: no)
   -h, --help         Show this help
 
 Settings, each also an option (and a setting(Name, Value) of --config):
@@ -249,8 +260,12 @@ oro_server_main(Argv) :-
         halt(1)
     ),
     kb_port_option(Options, Options1),
-    catch(( start_log(Options1),
-            oro_server_start([silent(false)|Options1], Server)
+    (   option(http(_), Options1)
+    ->  Options2 = Options1
+    ;   Options2 = [http(6970)|Options1]
+    ),
+    catch(( start_log(Options2),
+            oro_server_start([silent(false)|Options2], Server)
           ), E,
           ( print_message(error, E),
             halt(1)
@@ -268,6 +283,11 @@ oro_server_main(Argv) :-
     on_signal(hup, _, reopen_signal),
     threads_settled,
     format("oro listening on ~w:~w~n", [Host, Port]),
+    (   oro_server_http_port(Server, HttpPort)
+    ->  option(http_host(HttpHost), Options, '127.0.0.1'),
+        format("oro web listening on http://~w:~w/~n", [HttpHost, HttpPort])
+    ;   true
+    ),
     (   oro_server_kb_port(Server, KbPort)
     ->  format("oro serving the KB-API on ~w:~w~n", [Host, KbPort])
     ;   true
@@ -444,8 +464,10 @@ oro_server_kb_port(Server, Port) :-
 %   max_per_address(N) (set the settings of the same names),
 %   min_reply_latency(MS) (default: the setting min_reply_latency, 0;
 %   see reply_due/0), events_before_reply(Bool) (default: the setting
-%   events_before_reply, false; see oro_reply_with_events/2).  Server is
-%   an opaque handle.
+%   events_before_reply, false; see oro_reply_with_events/2),
+%   http(Port) (default `false`: no HTTP side; 0 picks a free port:
+%   see oro_http_start/2), http_host(Host) (default '127.0.0.1'),
+%   http_changes(Bool) (default `false`).  Server is an opaque handle.
 %
 %   @error domain_error(port, Port) if Port is over 65535.
 
@@ -497,6 +519,10 @@ oro_server_start(Options, Server) :-
         tcp_bind(Socket, Host:Port)
     ),
     tcp_listen(Socket, 64),
+    catch(start_http(Options, Http), E,
+          ( tcp_close_socket(Socket),
+            throw(E)
+          )),
     get_time(Started),
     message_queue_create(Control),
     message_queue_create(Jobs),
@@ -508,10 +534,32 @@ oro_server_start(Options, Server) :-
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
                         started:Started, accept:Accept, control:Control,
                         kbapi:KbApi,
-                        reply_latency:Latency, events_first:EventsFirst},
+                        reply_latency:Latency, events_first:EventsFirst,
+                        http:Http},
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
+
+%   start_http(+Options, -Http): the HTTP side, or `none`.
+
+start_http(Options, Http) :-
+    option(http(HttpPort), Options, false),
+    (   HttpPort == false
+    ->  Http = none
+    ;   option(http_host(HttpHost), Options, '127.0.0.1'),
+        option(http_changes(Changes), Options, false),
+        oro_http_start([port(HttpPort), host(HttpHost), changes(Changes)],
+                       Http)
+    ).
+
+%!  oro_server_http_port(+Server, -Port) is semidet.
+%
+%   The port of the HTTP side of Server; fails if it has none.
+
+oro_server_http_port(Server, Port) :-
+    Http = Server.http,
+    Http \== none,
+    oro_http_port(Http, Port).
 
 %!  oro_server_port(+Server, -Port) is det.
 %
@@ -553,6 +601,10 @@ oro_server_stop(Server) :-
     (   Server.kbapi == none
     ->  true
     ;   oro_kbapi_stop(Server.kbapi)
+    ),
+    (   Server.http == none
+    ->  true
+    ;   catch(oro_http_stop(Server.http), _, true)
     ),
     thread_send_message(Server.control, stop),
     wake_acceptor(Server),

@@ -22,6 +22,7 @@
             test_server_wait_idle/0,
             test_server_port/1,         % -Port
             test_server_kb_port/1,      % -Port
+            test_server_http_port/1,    % -Port
             test_server_connections/1,  % -Count
             test_connected/2,           % -Conn, :Goal
             test_call/3,                % +Method, +Params, ?Reply
@@ -402,6 +403,16 @@ test_server_kb_port(Port) :-
     !,
     oro_server_kb_port(Server, Port).
 
+%!  test_server_http_port(-Port) is semidet.
+%
+%   Port is the port of the HTTP side of the unit's server; fails if
+%   none runs.
+
+test_server_http_port(Port) :-
+    test_server(Server),
+    !,
+    oro_server_http_port(Server, Port).
+
 %!  test_server_connections(-Count) is semidet.
 %
 %   Count is the number of connections the unit's server is serving
@@ -591,7 +602,7 @@ test_map(Reply, Pairs) :-
 test_cli_server(Args, Port, Goal, Stderr) :-
     test_checkout_path('server/oro_server.pl', Server),
     test_checkout_path('.', Checkout),
-    append(Args, ['--port=0'], AllArgs),
+    append(Args, ['--port=0', '--http=0'], AllArgs),
     test_server_process([Server|AllArgs], Checkout, Port, Goal, Stderr).
 
 %!  test_server_process(+SwiplArgs, +Dir, -Port, :Goal, -Stderr) is det.

@@ -359,7 +359,7 @@ batch_request(Method, Prefix, K, Request) :-
 
 batch_text(Prefix, K, Batch) :-
     numlist(1, 100, Is),
-    maplist([I, S]>>( J is I mod 3 + 1,
+    maplist({Prefix, K}/[I, S]>>( J is I mod 3 + 1,
                       format(string(S), "\"~w~d_~d isOn table~d\"",
                              [Prefix, K, I, J])
                     ),
@@ -376,7 +376,7 @@ count_request("find\nx\n[?x isOn ?t]\n#end#\n").
 
 prefixed(Reply, Prefix, Names) :-
     test_set(Reply, All),
-    include([N]>>string_concat(Prefix, _, N), All, Names).
+    include({Prefix}/[N]>>string_concat(Prefix, _, N), All, Names).
 
 reply_kind(ok(V), ok(Kind)) :-
     (   sub_string(V, 0, 1, _, "{")

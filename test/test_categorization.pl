@@ -648,7 +648,7 @@ cat_world_ok(Kind, Xs, Total, Best, Ds) :-
     forall(member(P, Total), cat_all_apart(Xs, P, cat_specific)),
     % no property does better (§10.5: the maximal key)
     cat_candidates(Xs, Candidates),
-    foldl([P, M0, M]>>( cat_key(Xs, P, K), M is max(M0, K) ),
+    foldl({Xs}/[P, M0, M]>>( cat_key(Xs, P, K), M is max(M0, K) ),
           Candidates, 0, MaxKey),
     (   Best == []
     ->  MaxKey =:= 0

@@ -556,7 +556,7 @@ durability_server_args(Goals, Options, Args) :-
     findall(Arg, ( member(Goal, Goals),
                    member(Arg, ['-g', Goal])
                  ), GoalArgs),
-    append([GoalArgs, [Server, '--port=0'], Options], Args).
+    append([GoalArgs, [Server, '--port=0', '--no-http'], Options], Args).
 
 durability_kill(Pid, Out) :-
     catch(process_kill(Pid, kill), _, true),

@@ -335,7 +335,7 @@ test(parse_error_message, true(Found == true)) :-
     catch(oro_sparql_parse("ASK  ", _), E, true),
     '$messages':translate_message(E, Lines, []),
     with_output_to(string(Text), print_message_lines(current_output, '', Lines)),
-    (   sub_string(Text, _, _, _, "SPARQL: Line 1, column 6: Encountered the end of the query, was expecting one of: \"WHERE\", \"{\"")
+    (   sub_string(Text, _, _, _, "SPARQL: Line 1, column 6: Encountered the end of the query, was expecting one of: \"FROM\", \"WHERE\", \"{\"")
     ->  Found = true
     ;   Found = Text
     ).
@@ -706,3 +706,143 @@ test(load_refused,
     test_child_term('test/fixtures/sparql_unloadable.pl', Got).
 
 :- end_tests(sparql_engine_unloadable).
+
+:- begin_tests(sparql_decimals, [setup(test_store_testsuite)]).
+
+sq_decimal(Expr, Lex) :-
+    format(string(Q), "SELECT (~w AS ?x) WHERE {}", [Expr]),
+    oro_sparql(myself, Q, select(_, [[x-literal(type(_, Lex))]])).
+
+test(sum_exact, [true(Lex == '11.1')]) :-
+    oro_sparql(myself, "SELECT (SUM(?v) AS ?s) WHERE { VALUES ?v { 1.1 2.2 3.3 4.5 } }",
+               select(_, [[s-literal(type(_, Lex))]])).
+test(add_exact, [true(Lex == '0.3')]) :-
+    sq_decimal("0.1 + 0.2", Lex).
+test(equal_exact, [true(Lex == true)]) :-
+    sq_decimal("0.1 + 0.2 = 0.3", Lex).
+test(division_rounded, [true(Lex == '0.33333333333333333333')]) :-
+    sq_decimal("1 / 3", Lex).
+test(avg_decimal, [true(Lex == '1.5')]) :-
+    oro_sparql(myself, "SELECT (AVG(?v) AS ?a) WHERE { VALUES ?v { 1 2 } }",
+               select(_, [[a-literal(type(_, Lex))]])).
+test(negative_product, [true(Lex == '-1.5')]) :-
+    sq_decimal("-0.5 * 3", Lex).
+
+:- end_tests(sparql_decimals).
+
+:- begin_tests(sparql_optional_scope, [setup(sq_books)]).
+
+sq_books :-
+    test_store_testsuite,
+    oro_add(myself, ["book1 title \"T1\"", "book1 price 10",
+                     "book2 title \"T2\"", "book2 price 20"]).
+
+%   A FILTER in a group nested in an OPTIONAL's group is that group's:
+%   it does not see ?t of the outer group (W3C
+%   dawg-optional-filter-005-not-simplified).
+
+test(nested_group_filter_scope, [true(Rows == [[t-T1], [t-T2]])]) :-
+    test_literal(xsd:string, 'T1', T1),
+    test_literal(xsd:string, 'T2', T2),
+    oro_sparql(myself, "SELECT ?t ?p WHERE { ?b oro:title ?t OPTIONAL { { ?b oro:price ?p FILTER(?t = \"T2\") } } } ORDER BY ?t",
+               select(_, Rows)).
+test(optional_filter_sees_outer, [true(Rows == [[t-T1], [t-T2, p-P]])]) :-
+    test_literal(xsd:string, 'T1', T1),
+    test_literal(xsd:string, 'T2', T2),
+    oro_sparql(myself, "SELECT ?t ?p WHERE { ?b oro:title ?t OPTIONAL { ?b oro:price ?p FILTER(?t = \"T2\") } } ORDER BY ?t",
+               select(_, Rows)),
+    Rows = [_, [_, p-P]].
+
+:- end_tests(sparql_optional_scope).
+
+:- begin_tests(sparql_language_tags, [setup(sq_labels)]).
+
+sq_labels :-
+    test_store_testsuite,
+    oro_add(myself, ["zork label \"Zork\"@en"]).
+
+%   Language tags are case insensitive: "Zork"@EN matches "Zork"@en,
+%   and only a tag of another language fails to (asserted triples).
+
+test(tag_case_insensitive, [true(Answers == [true, true, false])]) :-
+    findall(B, ( member(Tag, ["en", "EN", "fr"]),
+                 format(string(Q), "ASK { ?x oro:label \"Zork\"@~w }", [Tag]),
+                 oro_sparql(myself, Q, ask(B), [infer(false)])
+               ), Answers).
+
+:- end_tests(sparql_language_tags).
+
+:- begin_tests(sparql_dates, [setup(test_store_testsuite)]).
+
+sq_bool(Expr, B) :-
+    format(string(Q), "SELECT (~w AS ?x) WHERE {}", [Expr]),
+    oro_sparql(myself, Q, select(_, [Row])),
+    (   Row = [x-literal(type(_, B))]
+    ->  true
+    ;   B = error                       % unbound: an expression error
+    ).
+
+test(midnight_24, [true(B == true)]) :-
+    sq_bool("\"2002-10-10T24:00:00Z\"^^xsd:dateTime = \"2002-10-11T00:00:00Z\"^^xsd:dateTime", B).
+test(datetime_order, [true(B == true)]) :-
+    sq_bool("\"2002-10-10T12:00:00Z\"^^xsd:dateTime < \"2002-10-10T24:00:00Z\"^^xsd:dateTime", B).
+test(date_vs_datetime_is_error, [true(B == error)]) :-
+    sq_bool("\"2006-08-23\"^^xsd:date = \"2006-08-23T00:00:00Z\"^^xsd:dateTime", B).
+test(date_vs_date, [true(B == true)]) :-
+    sq_bool("\"2006-08-23\"^^xsd:date < \"2006-08-24\"^^xsd:date", B).
+
+:- end_tests(sparql_dates).
+
+:- begin_tests(sparql_hash_date_functions, [setup(test_store_testsuite)]).
+
+sq_values(Select, Values) :-
+    format(string(Q), "SELECT ~w WHERE { BIND(\"2010-12-21T15:38:02.5-08:00\"^^xsd:dateTime AS ?d) BIND(\"2011-02-01T01:02:03\"^^xsd:dateTime AS ?n) }", [Select]),
+    oro_sparql(myself, Q, select(_, [Row])),
+    pairs_values(Row, Values).
+
+test(hashes, [true(Values == [literal('900150983cd24fb0d6963f7d28e17f72'),
+                              literal(a9993e364706816aba3e25717850c26c9cd0d89d),
+                              literal(ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad)])]) :-
+    sq_values("(MD5(\"abc\") AS ?a) (SHA1(\"abc\") AS ?b) (SHA256(\"abc\") AS ?c)", Values).
+test(hash_of_language_string_is_error, [true(Values == [])]) :-
+    sq_values("(MD5(\"abc\"@en) AS ?a)", Values).
+test(date_fields, [true(Lexes == ['2010', '12', '21', '15', '38', '2.5', '-PT8H'])]) :-
+    sq_values("(YEAR(?d) AS ?y) (MONTH(?d) AS ?mo) (DAY(?d) AS ?da) (HOURS(?d) AS ?h) (MINUTES(?d) AS ?mi) (SECONDS(?d) AS ?s) (TIMEZONE(?d) AS ?z)",
+              Values),
+    findall(L, member(literal(type(_, L)), Values), Lexes).
+test(tz, [true(Values == [literal('-08:00'), literal('')])]) :-
+    sq_values("(TZ(?d) AS ?a) (TZ(?n) AS ?b)", Values).
+test(timezone_without_zone_is_error, [true(Values == [])]) :-
+    sq_values("(TIMEZONE(?n) AS ?a)", Values).
+
+:- end_tests(sparql_hash_date_functions).
+
+:- begin_tests(sparql_fresh_values, [setup(test_store_testsuite)]).
+
+%   NOW() is one value for the whole query; RAND(), UUID(), STRUUID()
+%   and BNODE() are new at each call.
+
+test(now_rand_uuid_bnode, [true(Answer == [1, 2, 2, 2, 2])]) :-
+    oro_sparql(myself, "SELECT (NOW() AS ?n) (RAND() AS ?r) (UUID() AS ?u) (STRUUID() AS ?s) (BNODE() AS ?b) WHERE { VALUES ?x { 1 2 } }",
+               select(_, Rows)),
+    findall(N, ( member(V, [n, r, u, s, b]),
+                 findall(X, ( member(Row, Rows), memberchk(V-X, Row) ), Xs),
+                 sort(Xs, Set),
+                 length(Set, N)
+               ), Answer).
+test(uuid_is_urn, [true(Prefix == 'urn:uuid:')]) :-
+    oro_sparql(myself, "SELECT (UUID() AS ?u) WHERE {}", select(_, [[u-U]])),
+    sub_atom(U, 0, 9, _, Prefix).
+
+:- end_tests(sparql_fresh_values).
+
+:- begin_tests(sparql_iri_function, [setup(test_store_testsuite)]).
+
+test(iri_against_base, [true(IRIs == ['http://example.org/a', 'http://example.org/b'])]) :-
+    oro_sparql(myself, "BASE <http://example.org/> SELECT (IRI(\"a\") AS ?i) (URI(\"b\") AS ?u) WHERE {}",
+               select(_, [[i-I, u-U]])),
+    IRIs = [I, U].
+test(iri_default_namespace, [true(I == 'http://kb.openrobots.org#a')]) :-
+    oro_sparql(myself, "SELECT (IRI(\"a\") AS ?i) WHERE {}", select(_, [[i-I]])).
+
+:- end_tests(sparql_iri_function).

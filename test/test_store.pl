@@ -631,3 +631,20 @@ test(removals_retract_no_clause, true(Reclaimed < 20)) :-
         Reclaimed).
 
 :- end_tests(store_clause_churn).
+
+:- begin_tests(store_ontology_base).
+
+%   An ontology's relative IRIs resolve against the file's URL (the name
+%   of its graph for SPARQL), not against the rdf_db graph name.
+
+test(relative_iris_resolve_against_file, [true(Found == [true, true])]) :-
+    test_fixture('relative_iris.ttl', File),
+    oro_init([commonsense(false), ontologies([File])]),
+    uri_file_name(URL, File),
+    atom_concat(URL, '#Gadget', Gadget),
+    atom_concat(URL, '#Thing', Thing),
+    test_bool(rdf(Gadget, rdfs:subClassOf, Thing), F1),
+    test_bool(rdf(URL, rdfs:label, _), F2),
+    Found = [F1, F2].
+
+:- end_tests(store_ontology_base).

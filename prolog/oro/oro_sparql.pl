@@ -1,6 +1,9 @@
 :- module(oro_sparql,
           [ oro_sparql_parse/2,         % +Text, -Query
             oro_sparql/3,               % +Model, +Text, -Result
+            oro_sparql/4,               % +Model, +Text, -Result, +Options
+            oro_sparql_graph/2,         % ?IRI, ?Graph
+            oro_sparql_result_text/3,   % +Format, +Result, -Text
             oro_sparql_json/3,          % +Model, +Text, -JSON
             oro_query_values/4,         % +Model, +Key, +Text, -Values
             oro_find/5,                 % +Model, +Var, +Patterns, +Filters, -Values
@@ -78,8 +81,11 @@ oro_sparql_parse(Text, Query) :-
 %   Result is select(Vars, Rows) for a SELECT query, Vars the projected
 %   variable names (atoms) and Rows a list of rows, each a list of
 %   Var-Value pairs in the order of Vars, for the variables bound in
-%   that row (Value an IRI, a blank node or an rdf_db literal term); or
-%   ask(Bool) for an ASK query.
+%   that row (Value an IRI, a blank node or an rdf_db literal term);
+%   ask(Bool) for an ASK query; graph(Triples), a sorted list of
+%   rdf(S, P, O), for CONSTRUCT and DESCRIBE.  FROM, FROM NAMED and
+%   GRAPH name the graphs of oro_sparql_graph/2; without FROM, every
+%   graph of the store is a named graph.
 %
 %   @error existence_error(agent, Model) for an unknown model.
 %   @error syntax_error(oro_sparql(Message, Position)) for a malformed
@@ -91,10 +97,78 @@ oro_sparql(Model, Text, Result) :-
     oro_sparql_load,
     oro_sparql_engine:oro_sparql(Model, Text, Result).
 
+%!  oro_sparql(+Model, +Text, -Result, +Options) is det.
+%
+%   As oro_sparql/3, over the dataset Options describe:
+%
+%     - infer(Bool): with `true` (the default) the default graph is the
+%       inference closure of Model; with `false` it is the triples
+%       asserted in Model (its memory profiles and the ontologies it
+%       did not remove triples from), without inference.
+%     - default_graph(IRI), repeatable: the default graph is the RDF
+%       merge of these graphs (see oro_sparql_graph/2), as they are
+%       stored (infer/1 does not apply); a graph IRI naming no graph
+%       of the store is an empty graph.
+%     - named_graph(IRI), repeatable: the named graphs GRAPH sees.
+%
+%   With default_graph/1 or named_graph/1, the dataset is exactly the
+%   graphs they name, and the query's FROM and FROM NAMED are ignored
+%   (as the SPARQL 1.1 Protocol says).
+%
+%   @error existence_error(agent, Model) for an unknown model.
+%   @error syntax_error(oro_sparql(Message, Position)) for a malformed
+%          query.
+%   @error resource_error(oro_query_time_limit(Seconds)) if the query
+%          runs longer than the `time_limit` setting.
+
+oro_sparql(Model, Text, Result, Options) :-
+    oro_sparql_load,
+    oro_sparql_engine:oro_sparql(Model, Text, Result, Options).
+
+%!  oro_sparql_graph(?IRI, ?Graph) is nondet.
+%
+%   Graph is the rdf_db graph a SPARQL dataset names IRI: each memory
+%   profile of each model is a graph named as in rdf_db
+%   (`oro:myself#longterm`, see oro_graph/3), and each ontology file
+%   loaded is the graph named by the URL it was loaded from (its
+%   `file://` URL).
+
+oro_sparql_graph(IRI, Graph) :-
+    oro_sparql_load,
+    oro_sparql_engine:oro_sparql_graph(IRI, Graph).
+
+%!  oro_sparql_result_text(+Format, +Result, -Text) is det.
+%
+%   Text (a string) is Result, as oro_sparql/3 gives it, in Format.
+%   For select/2 and ask/1: `json` (SPARQL 1.1 Query Results JSON),
+%   `xml` (SPARQL Query Results XML), `csv` or `tsv` (SPARQL 1.1 Query
+%   Results CSV and TSV).  For graph/1: `turtle` or `ntriples`.
+%
+%   @error domain_error(sparql_result_format(Kind), Format) if Format
+%          does not write Result (Kind `bindings` or `graph`).
+
+oro_sparql_result_text(Format, Result, Text) :-
+    must_be(oneof([json, xml, csv, tsv, turtle, ntriples]), Format),
+    (   Result = graph(_)
+    ->  Kind = graph,
+        Formats = [turtle, ntriples]
+    ;   Kind = bindings,
+        Formats = [json, xml, csv, tsv]
+    ),
+    (   memberchk(Format, Formats)
+    ->  true
+    ;   domain_error(sparql_result_format(Kind), Format)
+    ),
+    oro_sparql_load,
+    oro_sparql_engine:oro_sparql_result_text(Format, Result, Text).
+
 %!  oro_sparql_json(+Model, +Text, -JSON) is det.
 %
 %   As oro_sparql/3, with the result as a string in the SPARQL 1.1
 %   Query Results JSON Format, on one line.
+%
+%   @error syntax_error(oro_sparql(Message, 0)) for a CONSTRUCT or
+%          DESCRIBE query, whose result is a graph.
 
 oro_sparql_json(Model, Text, JSON) :-
     oro_sparql_load,

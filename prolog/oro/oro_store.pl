@@ -705,7 +705,9 @@ load_ontology(Path, Format, Graph) :-
     N is N0 + 1,
     oro_shared_graph(ontology(N), Graph),
     oro_persist_exclude(Graph),
-    rdf_load(Path, [graph(Graph), format(Format), silent(true)]),
+    uri_file_name(URL, Path),               % relative IRIs: the file's,
+    rdf_load(Path, [graph(Graph), base_uri(URL),   % not the graph's
+                    format(Format), silent(true)]),
     assertz(ontology_graph(Graph)),
     index_graph_names(Graph),
     schema_changed.

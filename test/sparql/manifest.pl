@@ -239,5 +239,5 @@ test('bad-15','zoo.ttl','bad-15.rq',syntax_error(1,30)).
 test('bad-16','zoo.ttl','bad-16.rq',syntax_error(1,19)).
 test('bad-17','zoo.ttl','bad-17.rq',syntax_error(1,35)).
 test('bad-18','zoo.ttl','bad-18.rq',syntax_error(1,42)).
-test('bad-19','zoo.ttl','bad-19.rq',syntax_error(1,11)).
+test('bad-19','zoo.ttl','bad-19.rq',syntax_error(1,16)).
 test('bad-20','zoo.ttl','bad-20.rq',syntax_error(1,38)).
