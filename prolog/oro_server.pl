@@ -523,14 +523,18 @@ oro_server_start(Options, Server) :-
           ( tcp_close_socket(Socket),
             throw(E)
           )),
+    option(kb_port(KbPort), Options, false),
+    catch(start_kbapi(KbPort, Host, KbApi), E2,
+          ( (   Http == none
+            ->  true
+            ;   catch(oro_http_stop(Http), _, true)
+            ),
+            tcp_close_socket(Socket),
+            throw(E2)
+          )),
     get_time(Started),
     message_queue_create(Control),
     message_queue_create(Jobs),
-    option(kb_port(KbPort), Options, false),
-    (   KbPort == false
-    ->  KbApi = none
-    ;   oro_kbapi_start([port(KbPort), host(Host)], KbApi)
-    ),
     Server = oro_server{socket:Socket, host:Host, port:Port, jobs:Jobs,
                         started:Started, accept:Accept, control:Control,
                         kbapi:KbApi,
@@ -539,6 +543,14 @@ oro_server_start(Options, Server) :-
     start_workers(Server),
     thread_create(accept_loop(Server), Accept, []),
     debug(oro(server), 'Listening on ~w:~w', [Host, Port]).
+
+%   start_kbapi(+Port, +Host, -KbApi): the KB-API listener on Port, or
+%   `none` for Port `false`.
+
+start_kbapi(false, _, none) :-
+    !.
+start_kbapi(Port, Host, KbApi) :-
+    oro_kbapi_start([port(Port), host(Host)], KbApi).
 
 %   start_http(+Options, -Http): the HTTP side, or `none`.
 
