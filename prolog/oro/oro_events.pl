@@ -182,6 +182,7 @@ and ranges.
 
 :- dynamic
     watcher/5,                      % Id, Model, Registry, Spec, Query
+    watcher_variant/2,              % Key, Id (see variant_key/4)
     watcher_seq/2,                  % Id, Seq (registration order)
     watcher_state/2,                % Id, unknown|truth(Bool)|values
     watcher_value/2,                % Value, Id
@@ -1312,6 +1313,7 @@ request(reset, stop(Stops)) :-
     retractall(watcher(_, _, _, _, _)),
     flag(oro_events_watchers, _, 0),
     flag(oro_events_dropped, Dropped, Dropped+Count),
+    retractall(watcher_variant(_, _)),
     retractall(watcher_seq(_, _)),
     retractall(watcher_state(_, _)),
     retractall(watcher_value(_, _)),
@@ -1349,6 +1351,8 @@ register(_, _, _, _, Subscriber, _, _) :-
     !,
     existence_error(oro_subscriber, Subscriber).    % destroyed meanwhile
 register(Model, Registry, Spec, _, Subscriber, _, Id) :-
+    variant_key(Model, Registry, Spec, Key),
+    watcher_variant(Key, Id),
     watcher(Id, Model, Registry, Spec0, _),
     Spec0 =@= Spec,                     % the same: term patterns have variables
     !,
@@ -1366,6 +1370,8 @@ register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
                 )),
     flag(oro_watcher_seq, Seq, Seq+1),
     assertz(watcher(Id, Model, Registry, Spec, Query)),
+    variant_key(Model, Registry, Spec, Key),
+    assertz(watcher_variant(Key, Id)),
     flag(oro_events_watchers, N, N+1),
     assertz(watcher_seq(Id, Seq)),
     assertz(watcher_state(Id, State)),
@@ -1374,6 +1380,17 @@ register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
     assertz(subscription(Id, Subscriber)),
     note_callback(Id, Subscriber),
     debug(oro(events), 'Watcher ~w: ~q', [Id, Spec]).
+
+%   variant_key(+Model, +Registry, +Spec, -Key): the key under which
+%   watcher_variant/2 finds the watchers identical to Spec (its
+%   variants: term patterns have variables) of Model in Registry, so
+%   that a registration joins an identical watcher in one hashed lookup
+%   whatever the number of watchers; the candidates it finds are
+%   compared with =@=/2.  Attributes of the variables are ignored.
+
+variant_key(Model, Registry, Spec, Key) :-
+    copy_term_nat(Spec, Plain),
+    variant_sha1(v(Model, Registry, Plain), Key).
 
 %   note_callback(+Id, +Subscriber): a subscriber of oro_subscribe/8 is
 %   noted with its watcher here, in the watcher thread, so that an
@@ -1395,8 +1412,10 @@ initial_state(_, Model, Query, values, Values) :-
     query_values(Model, Query, Values).
 
 drop_watcher(Id) :-
-    (   retract(watcher(Id, _, _, _, _))
-    ->  flag(oro_events_watchers, N, N-1),
+    (   retract(watcher(Id, Model, Registry, Spec, _))
+    ->  variant_key(Model, Registry, Spec, Key),
+        retractall(watcher_variant(Key, Id)),
+        flag(oro_events_watchers, N, N-1),
         flag(oro_events_dropped, D, D+1)
     ;   true
     ),
