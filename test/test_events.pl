@@ -3034,7 +3034,10 @@ ev_warm_key(Model, Key) :-
 %   thread_statistics/3, no clock) with 2,000 watchers as with 100: no
 %   step looks at every watcher.  Joining an identical watcher once
 %   compared the new one with each watcher of the model in turn (two
-%   inferences a watcher).  The work is counted from one
+%   inferences a watcher), and a change of a transitive property (isOn
+%   is one in the test ontology) evaluated every watcher of a pattern
+%   through it (214,000 inferences with 100, 5 million with 2,100).
+%   The work is counted from one
 %   oro_events_sync/0 to the next, so that it includes what the thread
 %   does after answering.
 
@@ -3061,7 +3064,7 @@ test(work_independent_of_watchers,
 
 ev_register_many(Subscriber, From, To) :-
     forall(between(From, To, K),
-           ( format(string(Pattern), "?o eats many_~d", [K]),
+           ( format(string(Pattern), "?o isOn many_~d", [K]),
              ev_register_on_true(Subscriber, Pattern, _)
            )).
 
@@ -3070,8 +3073,8 @@ ev_register_many(Subscriber, From, To) :-
 %   (joined), to process a change firing it, and to clear it.
 
 ev_watcher_steps(Subscriber, Queue, K, [New, Join, Change, Clear]) :-
-    format(string(Pattern), "?o eats many_~d", [K]),
-    format(string(Fact), "many_obj eats many_~d", [K]),
+    format(string(Pattern), "?o isOn many_~d", [K]),
+    format(string(Fact), "many_obj_~d isOn many_~d", [K, K]),
     ev_watcher_work(ev_register_on_true(Subscriber, Pattern, Id), New),
     ev_watcher_work(ev_register_on_true(Subscriber, Pattern, Id), Join),
     ev_watcher_work(oro_add(myself, [Fact]), Change),

@@ -1455,8 +1455,10 @@ with_schemas(Models, Goal) :-
 %   the schema of Model (see the module doc):
 %
 %     - Deps: `[any]` or the predicates whose triples may change it;
-%     - Triggers: Predicate-Anchor pairs, Anchor `none`, res(R) or
-%       class(C) (none when Deps is `[any]`);
+%     - Triggers: Predicate-Anchor pairs, Anchor `none`, res(R),
+%       class(C), or `chain` and chain(C) for a pattern through a
+%       transitive property (chain_watcher/6) (none when Deps is
+%       `[any]`);
 %     - Plan: `full`, `static` (a new_instance watcher whose variable
 %       is not in its patterns) or items(Items), one
 %       item(I, Kind, PDeps, Anchored) per pattern: its index I, its
@@ -1591,6 +1593,20 @@ item_anchor(type, Q, S, O, Anchor) :-
         rdf_equal(Q, rdf:type)
     ->  Anchor = class(O)
     ;   Anchor = none
+    ).
+item_anchor(trans(Transitives), Q, S, O, Anchor) :-
+    (   atom(S)
+    ->  C = S
+    ;   atom(O)
+    ->  C = O
+    ),
+    !,
+    (   member(_-TDeps, Transitives),
+        ord_memberchk(Q, TDeps)
+    ->  (   Anchor = chain
+        ;   Anchor = chain(C)
+        )
+    ;   Anchor = res(C)
     ).
 item_anchor(_, _, _, _, none).
 
@@ -1810,6 +1826,7 @@ triggered(Model, Same, S, P, O, Id) :-
     ;   rdf_equal(P, rdf:type),
         model_schema(Model, SchemaKey),
         class_watcher(SchemaKey, Model, O, Id)
+    ;   chain_watcher(Model, Same, S, P, O, Id)
     ).
 
 triple_anchor(_, _, _, none).
@@ -1819,6 +1836,47 @@ triple_anchor(Same, S, O, res(R)) :-
     ),
     atom(X),
     same_individual(Same, X, R).
+
+%   chain_watcher(+Model, +Same, +S, +P, +O, -Id): watcher Id has a
+%   pattern through a transitive property T (Kind trans(_), see
+%   item_anchor/5) whose constant end is among the resources a triple
+%   `S P O`, P a dependency of T, can join to a new (or lost) instance:
+%   what reaches S or O through T and what they reach, themselves and
+%   their owl:sameAs individuals included (the ends chain_ends/8 seeds
+%   from).  Such a watcher is anchored by chain(C), C its constant, and
+%   by `chain`, which selects every one of them on P when the ends are
+%   more than max_seeds/1 (as every change of P did before).  A lost
+%   instance A T B used a removed triple: the first removed one on its
+%   path, u-v, has A among what reaches u after the change, the last
+%   one has B among what v reaches.
+
+chain_watcher(Model, Same, S, P, O, Id) :-
+    trigger_key(Model, P, chain, AnyKey),
+    once(watcher_trigger(AnyKey, Model, P, chain, _)),
+    chain_anchors(Model, Same, S, P, O, Anchors),
+    length(Anchors, N),
+    max_seeds(Max),
+    (   N =< Max
+    ->  member(C, Anchors),
+        trigger_key(Model, P, chain(C), Key),
+        watcher_trigger(Key, Model, P, chain(C), Id)
+    ;   watcher_trigger(AnyKey, Model, P, chain, Id)
+    ).
+
+chain_anchors(Model, Same, S, P, O, Anchors) :-
+    findall(C, ( oro_transitive_property(Model, T),
+                 oro_pattern_dependencies(Model, [rdf(_, T, _)], TDeps),
+                 ord_memberchk(P, TDeps),
+                 (   X = S
+                 ;   X = O
+                 ),
+                 atom(X),
+                 (   same_individual(Same, X, C)
+                 ;   oro_holds(Model, C, T, X)
+                 ;   oro_holds(Model, X, T, C)
+                 )
+               ), Anchors0),
+    sort(Anchors0, Anchors).
 
 %   class_watcher(+SchemaKey, +Model, +Class, -Id): watcher Id of Model is
 %   anchored by a super-class of Class (in the schema tables SchemaKey):
