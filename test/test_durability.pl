@@ -491,15 +491,26 @@ durability_restart_check(Dir, Sets, Replies) :-
 
 :- begin_tests(durability_compaction).
 
+%   durability_compacting(-Dir, +Every, +MinKB, -Saved): a fresh
+%   directory name, with the compaction settings compact_every and
+%   journal_min_kb set to Every and MinKB; durability_compacted(+Dir,
+%   +Saved) puts them back and removes the directory.
+
+durability_compacting(Dir, Every, MinKB, saved(E, K)) :-
+    durability_dir(Dir),
+    setting(oro_persist:compact_every, E),
+    setting(oro_persist:journal_min_kb, K),
+    set_setting(oro_persist:compact_every, Every),
+    set_setting(oro_persist:journal_min_kb, MinKB).
+
+durability_compacted(Dir, saved(E, K)) :-
+    set_setting(oro_persist:compact_every, E),
+    set_setting(oro_persist:journal_min_kb, K),
+    durability_cleanup(Dir).
+
 test(steady_updates_stay_small,
-     [ setup(( durability_dir(Dir),
-               setting(oro_persist:compact_every, E),
-               setting(oro_persist:journal_min_kb, K),
-               set_setting(oro_persist:compact_every, 100),
-               set_setting(oro_persist:journal_min_kb, 8) )),
-       cleanup(( set_setting(oro_persist:compact_every, E),
-                 set_setting(oro_persist:journal_min_kb, K),
-                 durability_cleanup(Dir) )),
+     [ setup(durability_compacting(Dir, 100, 8, Saved)),
+       cleanup(durability_compacted(Dir, Saved)),
        true(Got == true-true)
      ]) :-
     oro_init([db(Dir), commonsense(false)]),
@@ -525,14 +536,8 @@ test(steady_updates_stay_small,
 %   triple weighs about 50 bytes in a snapshot, 80 in a journal.
 
 test(shrunk_store_stays_small,
-     [ setup(( durability_dir(Dir),
-               setting(oro_persist:compact_every, E),
-               setting(oro_persist:journal_min_kb, K),
-               set_setting(oro_persist:compact_every, 100),
-               set_setting(oro_persist:journal_min_kb, 1) )),
-       cleanup(( set_setting(oro_persist:compact_every, E),
-                 set_setting(oro_persist:journal_min_kb, K),
-                 durability_cleanup(Dir) )),
+     [ setup(durability_compacting(Dir, 100, 1, Saved)),
+       cleanup(durability_compacted(Dir, Saved)),
        true(Got == true-[true, false]-100)
      ]) :-
     oro_init([db(Dir), commonsense(false)]),
