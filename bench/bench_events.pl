@@ -49,20 +49,22 @@
     the change (oro_events_sync/0), and until the subscriber's delivery
     thread calls its goal.
 
-    4. Many watchers (`--many=10000`, 0 to skip): for each of two
-    kinds, NEW_INSTANCE `?o isOn shelf_I` and FACT_CHECKING `?x isOn
-    table_I`, one connection of a fresh server registers N watchers with
+    4. Many watchers (`--many=10000`, 0 to skip): for each of three
+    kinds, NEW_INSTANCE `?o isOn place_I`, NEW_INSTANCE `?o behind
+    place_I` (a transitive property) and FACT_CHECKING `?o isOn
+    place_I`, one connection of a fresh server registers N watchers with
     distinct patterns: registrations a second over the first and the last
     thousand; then registering the first thousand again (each joins its
-    identical watcher); an add on a predicate no watcher uses, on the
-    watched predicate firing nothing, and one firing one watcher (its
-    event's latency; NEW_INSTANCE only), each the median of `--samples`
-    after a first add (which evaluates the FACT_CHECKING watchers, not
-    evaluated until a change comes, and is shown apart); clearing the N
-    watchers with clearEvent one by one, and, registered again, with
-    clearEvents (the first add is timed until the watcher thread has
-    processed it: a registration of a watcher already registered follows
-    it; a clearing is answered once done).  In this process, what a connection's close does: a
+    identical watcher); an add on a predicate no watcher uses (until
+    its reply), on the watched predicate firing nothing (until the
+    watcher thread has processed it: a registration of a watcher already
+    registered follows it), and one firing one watcher (its event's
+    latency; NEW_INSTANCE only), each the median of `--samples` after a
+    first add (which evaluates the FACT_CHECKING watchers, not evaluated
+    until a change comes, and is shown apart, timed as the watched
+    add); clearing the N watchers with clearEvent one by one, and,
+    registered again, with clearEvents (a clearing is answered once
+    done).  In this process, what a connection's close does: a
     subscriber of N watchers destroyed (oro_subscriber_destroy/2).
 
     Between phases a registration of an already registered watcher
@@ -454,25 +456,31 @@ many(N, Samples) :-
     format("~nMany watchers: ~D registrations from one connection~n", [N]),
     format("~w~t~14|~w~t~12+~w~t~12+~w~t~12+~w~t~13+~w~t~12+~w~t~12+\c
             ~w~t~12+~w~t~13+~w~t~12+~w~n",
-           [kind, 'first 1k/s', 'last 1k/s', 'join 1k/s', 'first add',
+           [kind, 'first 1k/s', 'last 1k/s', 'joins/s', 'first add',
             'unwatched', 'watched', event, 'clearEvent', clearEvents,
             close]),
-    forall(member(Kind, [new_instance, fact_checking]),
+    forall(member(Kind, [new_instance, transitive, fact_checking]),
            ( bench_with_server([], Port, _, many_socket(Port, Kind, N, Samples, Row)),
              many_close(Kind, N, Close),
              many_row(Kind, Row, Close)
            )).
 
-many_pattern(new_instance, I, P) :-
-    format(string(P), "?o isOn shelf_~d", [I]).
-many_pattern(fact_checking, I, P) :-
-    format(string(P), "?x isOn table_~d", [I]).
+%   many_pattern(+Kind, +I, -Pattern), many_predicate(+Kind, -P): the
+%   pattern of watcher I, and its predicate (`behind` is transitive).
+
+many_pattern(Kind, I, Pattern) :-
+    many_predicate(Kind, P),
+    format(string(Pattern), "?o ~w place_~d", [P, I]).
+
+many_predicate(new_instance, isOn).
+many_predicate(transitive, behind).
+many_predicate(fact_checking, isOn).
 
 many_register(Conn, Kind, I, Id) :-
     many_pattern(Kind, I, P),
-    (   Kind == new_instance
-    ->  call_ok(Conn, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", [P]], Id)
-    ;   call_ok(Conn, registerEvent, ["FACT_CHECKING", "ON_TRUE", [P]], Id)
+    (   Kind == fact_checking
+    ->  call_ok(Conn, registerEvent, ["FACT_CHECKING", "ON_TRUE", [P]], Id)
+    ;   call_ok(Conn, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", [P]], Id)
     ).
 
 %   many_socket(+Port, +Kind, +N, +Samples, -Row)
@@ -490,7 +498,7 @@ many_socket(Port, Kind, N, Samples, row(First, Last, Join, FirstAdd, Unwatched, 
                        many_register(Conn, Kind, 1, _)   % after the change
                      ), FirstAdd),
           add_times(Conn, N, unwatched, Samples, Unwatched),
-          add_times(Conn, N, watched, Samples, Watched),
+          many_watched(Conn, Kind, Samples, Watched),
           many_events(Conn, Kind, N, Ids, Samples, Events),
           bench_time(forall(member(Id, Ids), call_ok(Conn, clearEvent, [Id])), ClearOne),
           forall(between(1, N, I), many_register(Conn, Kind, I, _)),
@@ -516,16 +524,32 @@ many_rates(Conn, Kind, N, Rates, Ids) :-
     pairs_keys_values(Pairs, Rates, IdLists),
     append(IdLists, Ids).
 
+%   many_watched(+Conn, +Kind, +Samples, -Times): an add on the
+%   watchers' predicate that fires none of them, timed until the watcher
+%   thread has processed it (a registration of a watcher already
+%   registered follows it).
+
+many_watched(Conn, Kind, Samples, Times) :-
+    many_predicate(Kind, P),
+    findall(T, ( between(1, Samples, I),
+                 format(string(Stmt), "[plain_~d ~w floor]", [I, P]),
+                 bench_time(( call_ok(Conn, add, [Stmt]),
+                              many_register(Conn, Kind, 1, _)
+                            ), T)
+               ), Times).
+
 %   many_events(+Conn, +Kind, +N, +Ids, +Samples, -Latencies): event
 %   latencies of NEW_INSTANCE watchers picked in turn among the N.
 
-many_events(Conn, new_instance, N, Ids, Samples, Latencies) :-
+many_events(Conn, Kind, N, Ids, Samples, Latencies) :-
+    Kind \== fact_checking,
     !,
+    many_predicate(Kind, P),
     findall(L, ( between(1, Samples, S),
                  I is (S * 337) mod N + 1,
                  nth1(I, Ids, Id),
                  format(atom(Obj), "many_obj_~d", [S]),
-                 format(string(Stmt), "[~w isOn shelf_~d]", [Obj, I]),
+                 format(string(Stmt), "[~w ~w place_~d]", [Obj, P, I]),
                  format(string(Expected), "[\"~w\"]", [Obj]),
                  event_latency(Conn, Id, Stmt, Expected, L-_)
                ), Latencies).
@@ -539,10 +563,10 @@ many_close(Kind, N, Micros) :-
     oro_subscriber_create(many_ignore, Subscriber, []),
     forall(between(1, N, I),
            ( many_pattern(Kind, I, P),
-             (   Kind == new_instance
-             ->  oro_register_event(myself, new_instance, on_true, o, [P],
+             (   Kind == fact_checking
+             ->  oro_register_event(myself, fact_checking, on_true, '', [P],
                                     Subscriber, _)
-             ;   oro_register_event(myself, fact_checking, on_true, '', [P],
+             ;   oro_register_event(myself, new_instance, on_true, o, [P],
                                     Subscriber, _)
              )
            )),
