@@ -60,6 +60,24 @@
     not firing (A waits for its evaluation); the same watcher firing
     (time until the reply and the event are both read).
 
+    5. Many watchers (`--many=10000`, 0 to skip): for each of three
+    kinds, NEW_INSTANCE `?o isOn place_I`, NEW_INSTANCE `?o behind
+    place_I` (a transitive property) and FACT_CHECKING `?o isOn
+    place_I`, one connection of a fresh server registers N watchers with
+    distinct patterns: registrations a second over the first and the last
+    thousand; then registering the first thousand again (each joins its
+    identical watcher); an add on a predicate no watcher uses (until
+    its reply), on the watched predicate firing nothing (until the
+    watcher thread has processed it: a registration of a watcher already
+    registered follows it), and one firing one watcher (its event's
+    latency; NEW_INSTANCE only), each the median of `--samples` after a
+    first add (which evaluates the FACT_CHECKING watchers, not evaluated
+    until a change comes, and is shown apart, timed as the watched
+    add); clearing the N watchers with clearEvent one by one, and,
+    registered again, with clearEvents (a clearing is answered once
+    done).  In this process, what a connection's close does: a
+    subscriber of N watchers destroyed (oro_subscriber_destroy/2).
+
     Between phases a registration of an already registered watcher
     serves as a barrier: it is answered once the watcher thread has
     processed every change before it.
@@ -84,6 +102,7 @@ opt_type(issue, issue, boolean).
 opt_type(world, world, nonneg).
 opt_type(hops, hops, boolean).
 opt_type(reply, reply, boolean).
+opt_type(many, many, nonneg).
 
 main :-
     current_prolog_flag(argv, Argv),
@@ -94,6 +113,7 @@ main :-
     option(world(World), Options, 100000),
     option(hops(Hops), Options, true),
     option(reply(Reply), Options, true),
+    option(many(Many), Options, 10000),
     bench_machine,
     (   Levels == []
     ->  true
@@ -109,6 +129,10 @@ main :-
     ),
     (   Hops == true
     ->  hops(World, Samples)
+    ;   true
+    ),
+    (   Many > 0
+    ->  many(Many, Samples)
     ;   true
     ).
 
@@ -499,6 +523,148 @@ pong(In) :-
         pong(In)
     ;   true
     ).
+
+		 /*******************************
+		 *         MANY WATCHERS        *
+		 *******************************/
+
+many(N, Samples) :-
+    format("~nMany watchers: ~D registrations from one connection~n", [N]),
+    format("~w~t~14|~w~t~12+~w~t~12+~w~t~12+~w~t~13+~w~t~12+~w~t~12+\c
+            ~w~t~12+~w~t~13+~w~t~12+~w~n",
+           [kind, 'first 1k/s', 'last 1k/s', 'joins/s', 'first add',
+            'unwatched', 'watched', event, 'clearEvent', clearEvents,
+            close]),
+    forall(member(Kind, [new_instance, transitive, fact_checking]),
+           ( bench_with_server([], Port, _, many_socket(Port, Kind, N, Samples, Row)),
+             many_close(Kind, N, Close),
+             many_row(Kind, Row, Close)
+           )).
+
+%   many_pattern(+Kind, +I, -Pattern), many_predicate(+Kind, -P): the
+%   pattern of watcher I, and its predicate (`behind` is transitive).
+
+many_pattern(Kind, I, Pattern) :-
+    many_predicate(Kind, P),
+    format(string(Pattern), "?o ~w place_~d", [P, I]).
+
+many_predicate(new_instance, isOn).
+many_predicate(transitive, behind).
+many_predicate(fact_checking, isOn).
+
+many_register(Conn, Kind, I, Id) :-
+    many_pattern(Kind, I, P),
+    (   Kind == fact_checking
+    ->  call_ok(Conn, registerEvent, ["FACT_CHECKING", "ON_TRUE", [P]], Id)
+    ;   call_ok(Conn, registerEvent, ["NEW_INSTANCE", "ON_TRUE", "o", [P]], Id)
+    ).
+
+%   many_socket(+Port, +Kind, +N, +Samples, -Row)
+
+many_socket(Port, Kind, N, Samples, row(First, Last, Join, FirstAdd, Unwatched, Watched, Events, ClearOne, ClearAll)) :-
+    bench_with_connection(
+        Port, Conn,
+        ( many_rates(Conn, Kind, N, Rates, Ids),
+          Rates = [First|_],
+          last(Rates, Last),
+          K is min(1000, N),
+          bench_time(forall(between(1, K, I), many_register(Conn, Kind, I, _)), TJoin),
+          Join is K / (TJoin / 1.0e6),
+          bench_time(( call_ok(Conn, add, ["[first_add hasColor red]"]),
+                       many_register(Conn, Kind, 1, _)   % after the change
+                     ), FirstAdd),
+          add_times(Conn, N, unwatched, Samples, Unwatched),
+          many_watched(Conn, Kind, Samples, Watched),
+          many_events(Conn, Kind, N, Ids, Samples, Events),
+          bench_time(forall(member(Id, Ids), call_ok(Conn, clearEvent, [Id])), ClearOne),
+          forall(between(1, N, I), many_register(Conn, Kind, I, _)),
+          bench_time(call_ok(Conn, clearEvents, []), ClearAll)
+        )).
+
+%   many_rates(+Conn, +Kind, +N, -Rates, -Ids): registrations a second,
+%   a thousand at a time.
+
+many_rates(Conn, Kind, N, Rates, Ids) :-
+    Chunks is (N + 999) // 1000,
+    findall(Rate-ChunkIds,
+            ( between(1, Chunks, C),
+              From is (C - 1) * 1000 + 1,
+              To is min(N, C * 1000),
+              get_time(T0),
+              findall(Id, ( between(From, To, I),
+                            many_register(Conn, Kind, I, Id)
+                          ), ChunkIds),
+              get_time(T1),
+              Rate is (To - From + 1) / (T1 - T0)
+            ), Pairs),
+    pairs_keys_values(Pairs, Rates, IdLists),
+    append(IdLists, Ids).
+
+%   many_watched(+Conn, +Kind, +Samples, -Times): an add on the
+%   watchers' predicate that fires none of them, timed until the watcher
+%   thread has processed it (a registration of a watcher already
+%   registered follows it).
+
+many_watched(Conn, Kind, Samples, Times) :-
+    many_predicate(Kind, P),
+    findall(T, ( between(1, Samples, I),
+                 format(string(Stmt), "[plain_~d ~w floor]", [I, P]),
+                 bench_time(( call_ok(Conn, add, [Stmt]),
+                              many_register(Conn, Kind, 1, _)
+                            ), T)
+               ), Times).
+
+%   many_events(+Conn, +Kind, +N, +Ids, +Samples, -Latencies): event
+%   latencies of NEW_INSTANCE watchers picked in turn among the N.
+
+many_events(Conn, Kind, N, Ids, Samples, Latencies) :-
+    Kind \== fact_checking,
+    !,
+    many_predicate(Kind, P),
+    findall(L, ( between(1, Samples, S),
+                 I is (S * 337) mod N + 1,
+                 nth1(I, Ids, Id),
+                 format(atom(Obj), "many_obj_~d", [S]),
+                 format(string(Stmt), "[~w ~w place_~d]", [Obj, P, I]),
+                 format(string(Expected), "[\"~w\"]", [Obj]),
+                 event_latency(Conn, Id, Stmt, Expected, L-_)
+               ), Latencies).
+many_events(_, _, _, _, _, []).
+
+%   many_close(+Kind, +N, -Micros): in this process, the time to destroy
+%   a subscriber of N watchers, as a connection's close does.
+
+many_close(Kind, N, Micros) :-
+    oro_init([]),
+    oro_subscriber_create(many_ignore, Subscriber, []),
+    forall(between(1, N, I),
+           ( many_pattern(Kind, I, P),
+             (   Kind == fact_checking
+             ->  oro_register_event(myself, fact_checking, on_true, '', [P],
+                                    Subscriber, _)
+             ;   oro_register_event(myself, new_instance, on_true, o, [P],
+                                    Subscriber, _)
+             )
+           )),
+    bench_time(oro_subscriber_destroy(Subscriber, [abort(true)]), Micros),
+    oro_watchers(myself, []),
+    oro_reset.
+
+many_ignore(_, _).
+
+seconds_text(Micros, Text) :-
+    format(string(Text), "~3f s", [Micros / 1.0e6]).
+
+many_row(Kind, row(First, Last, Join, FirstAdd, Unwatched, Watched, Events, ClearOne, ClearAll), Close) :-
+    bench_micros(FirstAdd, FA),
+    median_text(Unwatched, U),
+    median_text(Watched, W),
+    median_text(Events, E),
+    maplist(seconds_text, [ClearOne, ClearAll, Close], [C1, CA, CL]),
+    format("~w~t~14|~0f~t~12+~0f~t~12+~0f~t~12+~w~t~13+~w~t~12+~w~t~12+\c
+            ~w~t~12+~w~t~13+~w~t~12+~w~n",
+           [Kind, First, Last, Join, FA, U, W, E, C1, CA, CL]),
+    flush_output.
 
 		 /*******************************
 		 *            REPORT            *

@@ -183,6 +183,7 @@ and ranges.
 
 :- dynamic
     watcher/5,                      % Id, Model, Registry, Spec, Query
+    watcher_variant/2,              % Key, Id (see variant_key/4)
     watcher_seq/2,                  % Id, Seq (registration order)
     watcher_state/2,                % Id, unknown|truth(Bool)|values
     watcher_value/2,                % Value, Id
@@ -1335,6 +1336,7 @@ request(reset, stop(Stops)) :-
     retractall(watcher(_, _, _, _, _)),
     flag(oro_events_watchers, _, 0),
     flag(oro_events_dropped, Dropped, Dropped+Count),
+    retractall(watcher_variant(_, _)),
     retractall(watcher_seq(_, _)),
     retractall(watcher_state(_, _)),
     retractall(watcher_value(_, _)),
@@ -1372,6 +1374,8 @@ register(_, _, _, _, Subscriber, _, _) :-
     !,
     existence_error(oro_subscriber, Subscriber).    % destroyed meanwhile
 register(Model, Registry, Spec, _, Subscriber, _, Id) :-
+    variant_key(Model, Registry, Spec, Key),
+    watcher_variant(Key, Id),
     watcher(Id, Model, Registry, Spec0, _),
     Spec0 =@= Spec,                     % the same: term patterns have variables
     !,
@@ -1389,6 +1393,8 @@ register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
                 )),
     flag(oro_watcher_seq, Seq, Seq+1),
     assertz(watcher(Id, Model, Registry, Spec, Query)),
+    variant_key(Model, Registry, Spec, Key),
+    assertz(watcher_variant(Key, Id)),
     flag(oro_events_watchers, N, N+1),
     assertz(watcher_seq(Id, Seq)),
     assertz(watcher_state(Id, State)),
@@ -1397,6 +1403,17 @@ register(Model, Registry, Spec, Query, Subscriber, Snapshot, Id) :-
     assertz(subscription(Id, Subscriber)),
     note_callback(Id, Subscriber),
     debug(oro(events), 'Watcher ~w: ~q', [Id, Spec]).
+
+%   variant_key(+Model, +Registry, +Spec, -Key): the key under which
+%   watcher_variant/2 finds the watchers identical to Spec (its
+%   variants: term patterns have variables) of Model in Registry, so
+%   that a registration joins an identical watcher in one hashed lookup
+%   whatever the number of watchers; the candidates it finds are
+%   compared with =@=/2.  Attributes of the variables are ignored.
+
+variant_key(Model, Registry, Spec, Key) :-
+    copy_term_nat(Spec, Plain),
+    variant_sha1(v(Model, Registry, Plain), Key).
 
 %   note_callback(+Id, +Subscriber): a subscriber of oro_subscribe/8 is
 %   noted with its watcher here, in the watcher thread, so that an
@@ -1418,8 +1435,10 @@ initial_state(_, Model, Query, values, Values) :-
     query_values(Model, Query, Values).
 
 drop_watcher(Id) :-
-    (   retract(watcher(Id, _, _, _, _))
-    ->  flag(oro_events_watchers, N, N-1),
+    (   retract(watcher(Id, Model, Registry, Spec, _))
+    ->  variant_key(Model, Registry, Spec, Key),
+        retractall(watcher_variant(Key, Id)),
+        flag(oro_events_watchers, N, N-1),
         flag(oro_events_dropped, D, D+1)
     ;   true
     ),
@@ -1459,8 +1478,10 @@ with_schemas(Models, Goal) :-
 %   the schema of Model (see the module doc):
 %
 %     - Deps: `[any]` or the predicates whose triples may change it;
-%     - Triggers: Predicate-Anchor pairs, Anchor `none`, res(R) or
-%       class(C) (none when Deps is `[any]`);
+%     - Triggers: Predicate-Anchor pairs, Anchor `none`, res(R),
+%       class(C), or `chain` and chain(C) for a pattern through a
+%       transitive property (chain_watcher/6) (none when Deps is
+%       `[any]`);
 %     - Plan: `full`, `static` (a new_instance watcher whose variable
 %       is not in its patterns) or items(Items), one
 %       item(I, Kind, PDeps, Anchored) per pattern: its index I, its
@@ -1595,6 +1616,20 @@ item_anchor(type, Q, S, O, Anchor) :-
         rdf_equal(Q, rdf:type)
     ->  Anchor = class(O)
     ;   Anchor = none
+    ).
+item_anchor(trans(Transitives), Q, S, O, Anchor) :-
+    (   atom(S)
+    ->  C = S
+    ;   atom(O)
+    ->  C = O
+    ),
+    !,
+    (   member(_-TDeps, Transitives),
+        ord_memberchk(Q, TDeps)
+    ->  (   Anchor = chain
+        ;   Anchor = chain(C)
+        )
+    ;   Anchor = res(C)
     ).
 item_anchor(_, _, _, _, none).
 
@@ -1814,6 +1849,7 @@ triggered(Model, Same, S, P, O, Id) :-
     ;   rdf_equal(P, rdf:type),
         model_schema(Model, SchemaKey),
         class_watcher(SchemaKey, Model, O, Id)
+    ;   chain_watcher(Model, Same, S, P, O, Id)
     ).
 
 triple_anchor(_, _, _, none).
@@ -1823,6 +1859,47 @@ triple_anchor(Same, S, O, res(R)) :-
     ),
     atom(X),
     same_individual(Same, X, R).
+
+%   chain_watcher(+Model, +Same, +S, +P, +O, -Id): watcher Id has a
+%   pattern through a transitive property T (Kind trans(_), see
+%   item_anchor/5) whose constant end is among the resources a triple
+%   `S P O`, P a dependency of T, can join to a new (or lost) instance:
+%   what reaches S or O through T and what they reach, themselves and
+%   their owl:sameAs individuals included (the ends chain_ends/8 seeds
+%   from).  Such a watcher is anchored by chain(C), C its constant, and
+%   by `chain`, which selects every one of them on P when the ends are
+%   more than max_seeds/1 (as every change of P did before).  A lost
+%   instance A T B used a removed triple: the first removed one on its
+%   path, u-v, has A among what reaches u after the change, the last
+%   one has B among what v reaches.
+
+chain_watcher(Model, Same, S, P, O, Id) :-
+    trigger_key(Model, P, chain, AnyKey),
+    once(watcher_trigger(AnyKey, Model, P, chain, _)),
+    chain_anchors(Model, Same, S, P, O, Anchors),
+    length(Anchors, N),
+    max_seeds(Max),
+    (   N =< Max
+    ->  member(C, Anchors),
+        trigger_key(Model, P, chain(C), Key),
+        watcher_trigger(Key, Model, P, chain(C), Id)
+    ;   watcher_trigger(AnyKey, Model, P, chain, Id)
+    ).
+
+chain_anchors(Model, Same, S, P, O, Anchors) :-
+    findall(C, ( oro_transitive_property(Model, T),
+                 oro_pattern_dependencies(Model, [rdf(_, T, _)], TDeps),
+                 ord_memberchk(P, TDeps),
+                 (   X = S
+                 ;   X = O
+                 ),
+                 atom(X),
+                 (   same_individual(Same, X, C)
+                 ;   oro_holds(Model, C, T, X)
+                 ;   oro_holds(Model, X, T, C)
+                 )
+               ), Anchors0),
+    sort(Anchors0, Anchors).
 
 %   class_watcher(+SchemaKey, +Model, +Class, -Id): watcher Id of Model is
 %   anchored by a super-class of Class (in the schema tables SchemaKey):

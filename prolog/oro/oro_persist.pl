@@ -57,17 +57,26 @@ serialised), a line cut in the middle included, and an interrupted
 compaction is finished or undone.  A change is thus recovered whole or
 not at all, and every change whose `ok` reached a client is recovered.
 
-Journals are compacted (rdf_flush_journals/1: a snapshot replaces the
-journal) when they outgrow both `journal_min_kb` and their snapshot,
-checked every `compact_every` changes, so a steady stream of updates
-to a few facts keeps the directory small; oro.jnl is rewritten with
-the records still live at the same time.
+Journals are compacted (rdf_flush_journals/1: a snapshot of the live
+triples replaces the journal) when they outgrow both `journal_min_kb`
+and `journal_ratio` times their snapshot, checked each time
+`compact_every` triples have changed (a monitor counts them, whatever
+the size of the changes); oro.jnl is rewritten with the records still
+live at the same time.  So the directory holds a snapshot of at most
+about the live triples and a journal of a fraction of them, whatever
+the history: a steady stream of updates to a few facts keeps it small,
+a store that grew and then shrank is compacted to its new size, and a
+restart reads time in proportion to the live triples, not to every
+change ever made.  A restart checks the journals at its first change.
 */
 
 :- setting(compact_every, positive_integer, 1000,
-           'Changes between two checks of the journals\' sizes').
+           'Triples changed between two checks of the journals\' sizes').
 :- setting(journal_min_kb, positive_integer, 256,
            'A journal is compacted only past this size (KB)').
+:- setting(journal_ratio, float, 0.25,
+           'A journal past journal_min_kb is compacted once it outweighs \c
+            this fraction of its snapshot').
 
 :- dynamic
     attached/2,                     % Directory, CommitLogStream
@@ -127,6 +136,9 @@ oro_persist_attach(Dir0) :-
     write_commit_log(LogFile, Records, Committed),
     open(LogFile, append, Log, [encoding(utf8)]),
     assertz(attached(Dir, Log)),
+    setting(compact_every, Every),
+    flag(oro_persist_changed, _, Every),    % checked at the first change
+    rdf_monitor(oro_persist:count_change, [-all, +assert, +retract, +update]),
     debug(oro(persist), 'Attached ~w (last commit ~d)', [Dir, Committed]).
 
 %!  oro_persist_detach is det.
@@ -136,7 +148,8 @@ oro_persist_attach(Dir0) :-
 
 oro_persist_detach :-
     (   retract(attached(Dir, Log))
-    ->  close(Log),
+    ->  rdf_monitor(oro_persist:count_change, [-all]),
+        close(Log),
         rdf_detach_db,
         retractall(restored(_)),
         debug(oro(persist), 'Detached ~w', [Dir])
@@ -207,11 +220,24 @@ commit(Log, Seq) :-
     format(Log, 'commit(~d).~n', [Seq]),
     flush_output(Log),
     flag(oro_persist_seq, _, Seq),
+    flag(oro_persist_changed, Changed, Changed),
     setting(compact_every, Every),
-    (   Seq mod Every =:= 0
-    ->  compact(false)
+    (   Changed >= Every
+    ->  flag(oro_persist_changed, _, 0),
+        compact(false)
     ;   true
     ).
+
+%   count_change(+Event): an rdf_monitor/2 callback counting the triples
+%   changed (added, removed, updated) while a directory is attached, so
+%   that the journals are checked after as many triples as
+%   compact_every says, be they changed one a transaction or a
+%   thousand.
+
+:- public count_change/1.
+
+count_change(_) :-
+    flag(oro_persist_changed, N, N+1).
 
 %!  oro_persist_record(+Record) is det.
 %
@@ -272,6 +298,17 @@ compact(All) :-
     ),
     compact_commit_log(All, MinKB).
 
+%   compactable(+All, +MinKB, -Graph): the journal of Graph is to be
+%   compacted: All is `true`, or it is past MinKB and journal_ratio
+%   times its snapshot.  The snapshot holds at most the triples live
+%   when it was written, and the journal every change since, each
+%   record weighing more than a triple of a snapshot: so once the
+%   journal outweighs a fraction r of the snapshot, the live triples
+%   may have changed by about r of the snapshot's, and the new snapshot
+%   replaces both.  Snapshot and journal stay within a constant of the
+%   live triples (one that shrank compacts as soon as its removals
+%   outweigh r of it).
+
 compactable(All, MinKB, Graph) :-
     rdf_graph(Graph),
     rdf_journal_file(Graph, Journal),
@@ -283,7 +320,8 @@ compactable(All, MinKB, Graph) :-
         ->  size_file(Snapshot, SnapSize)
         ;   SnapSize = 0
         ),
-        Size > SnapSize
+        setting(journal_ratio, Ratio),
+        Size > Ratio * SnapSize
     ).
 
 compact_commit_log(All, MinKB) :-
