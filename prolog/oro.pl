@@ -56,6 +56,7 @@
             oro_watchers/2,             % +Model, -Watchers
             oro_events_sync/0,
             oro_events_sync_sent/0,
+            oro_events_sync_sent/1,     % +Timeout
             % categorization
             oro_similarities/4,         % +Model, +A, +B, -Similarities
             oro_differences/4,          % +Model, +A, +B, -Differences

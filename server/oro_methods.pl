@@ -17,6 +17,7 @@
 :- use_module(library(http/json)).
 :- use_module(library(aggregate)).
 :- use_module(library(readutil)).
+:- use_module(library(settings)).
 :- use_module('../prolog/oro').
 :- use_module('../prolog/oro/oro_parse').
 :- use_module('../prolog/oro/oro_names').
@@ -57,6 +58,12 @@ arity, decodes the parameters, calls it, and turns any error into an
 ORO error reply through oro_errors.  Only what is declared here is
 listed by listMethods, listSimpleMethods and help.
 */
+
+:- setting(reply_events_wait, number, 2,
+           'Seconds a reply to a connection with watchers waits at most \c
+           for the watcher thread to evaluate the request''s changes, so \c
+           that their events are written with it; events that take \c
+           longer follow the reply').
 
 :- multifile method/4.
 :- discontiguous method/4.
@@ -1062,8 +1069,10 @@ event_content(Values, list(Texts)) :-
 %   Write a reply to the connection of Context with call(Write, Stream),
 %   followed by the events waiting for the connection, in one write:
 %   first wait until the watcher thread has processed the changes the
-%   calling thread made (oro_events_sync_sent/0), so that the events of
-%   the request being answered are among them.  When Context's
+%   calling thread made (oro_events_sync_sent/1), so that the events of
+%   the request being answered are among them -- for reply_events_wait
+%   seconds at most: events whose evaluation takes longer follow the
+%   reply, written by the connection's event writer.  When Context's
 %   `events_first` is `true` (the server's events_before_reply), the
 %   events come first, then the reply, still in one write: a client
 %   that reads as liboro does then never finds an event left over after
@@ -1073,7 +1082,8 @@ event_content(Values, list(Texts)) :-
 
 oro_reply_with_events(Context, Write) :-
     arg(1, Context.subscribers, [events(_, Outbox, _, _)]),
-    oro_events_sync_sent,
+    setting(reply_events_wait, Wait),
+    ignore(oro_events_sync_sent(Wait)),
     oro_drain_queue(Outbox, Events),
     with_output_to(string(Reply),
                    ( current_output(S),

@@ -388,6 +388,67 @@ test(prolog_clear_events, [ setup(eo_fresh),
 
 :- end_tests(events_clear_all).
 
+:- begin_tests(events_slow_watcher,
+               [ setup(test_server_start([commonsense(true)])),
+                 cleanup(test_server_stop)
+               ]).
+
+%   A reply waits for the watcher thread reply_events_wait seconds at
+%   most: here the watcher thread is held by an in-watcher subscriber
+%   of the test (on another watcher that the same add fires) until the
+%   reply has come; the connection's own event follows, once.
+
+test(reply_not_held_by_a_slow_watcher,
+     [ setup(eo_fresh),
+       true(Got == reply(ok("")) - events(1))
+     ]) :-
+    message_queue_create(Gate),
+    oro_subscriber_create(hold_watcher(Gate), Holder, [in_watcher(true)]),
+    call_cleanup(
+        test_with_setting(oro_methods:reply_events_wait, 0.1,
+                          slow_watcher_reply(Gate, Holder, Got)),
+        ( thread_send_message(Gate, open),
+          oro_subscriber_destroy(Holder),
+          message_queue_destroy(Gate)
+        )).
+
+slow_watcher_reply(Gate, Holder, reply(Reply)-events(N)) :-
+    oro_register_event(myself, new_instance, on_true, y, ["?y isOn table1"],
+                       Holder, _),
+    test_connected(C,
+        ( oro_call(C, registerEvent,
+                   ["NEW_INSTANCE", "ON_TRUE", "x", "[?x isAt table1]"],
+                   ok(_), 10),
+          oro_send_raw(C, "add
+[cup1 isOn table1]
+#end#
+"),
+          oro_receive(C, Reply0, 10),
+          (   Reply0 = event(_, _)                  % the connection's own
+          ->  oro_receive(C, Reply, 10),            % event, evaluated first
+              Seen = 1
+          ;   Reply = Reply0,
+              Seen = 0
+          ),
+          thread_send_message(Gate, open),
+          (   Seen == 1
+          ->  N = 1
+          ;   oro_receive(C, Event, 10),
+              (   Event = event(_, _)
+              ->  N = 1
+              ;   N = 0
+              )
+          )
+        )).
+
+%   hold_watcher(+Gate, +Id, +Content): wait until the test opens Gate
+%   (10 s at most).
+
+hold_watcher(Gate, _, _) :-
+    ignore(thread_get_message(Gate, open, [timeout(10)])).
+
+:- end_tests(events_slow_watcher).
+
                  /*******************************
                  *     MINIMUM REPLY LATENCY    *
                  *******************************/

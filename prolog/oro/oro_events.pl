@@ -15,7 +15,8 @@
             oro_subscribe/8,            % +Model, +Type, +Trigger, +Var, +Patterns, :Callback, -Subscription, +Options
             oro_unsubscribe/1,          % +IdOrSubscription
             oro_events_sync/0,
-            oro_events_sync_sent/0
+            oro_events_sync_sent/0,
+            oro_events_sync_sent/1      % +Timeout
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -307,6 +308,21 @@ oro_events_sync_sent :-
     ;   true
     ).
 
+%!  oro_events_sync_sent(+Timeout) is semidet.
+%
+%   As oro_events_sync_sent/0, waiting Timeout seconds at most: fails
+%   if the watcher thread has not processed those changes by then (it
+%   goes on, and their events are queued to the subscribers when it is
+%   done).
+
+oro_events_sync_sent(Timeout) :-
+    must_be(number, Timeout),
+    (   nb_current(oro_events_sent, true)
+    ->  nb_setval(oro_events_sent, false),
+        call_watcher(sync, true, [timeout(Timeout)])
+    ;   true
+    ).
+
 call_watcher(Request) :-
     call_watcher(Request, true).
 
@@ -320,12 +336,42 @@ call_watcher(Request, Reply) :-
 call_watcher(Request, Reply, Options) :-
     oro_events_start,
     thread_self(Me),
+    forget_late_replies(Me),
     gensym(oro_reply_, Tag),
     thread_send_message(oro_watcher_queue, call(Request, Me, Tag)),
-    thread_get_message(Me, reply(Tag, Result), Options),
+    (   thread_get_message(Me, reply(Tag, Result), Options)
+    ->  true
+    ;   late_tags(Late),
+        nb_setval(oro_events_late, [Tag|Late]),
+        fail
+    ),
     (   Result = error(E)
     ->  throw(E)
     ;   Result = Reply
+    ).
+
+%   forget_late_replies(+Me): take from the queue of the calling thread
+%   the replies that came after their call_watcher/3 gave up waiting
+%   (as they come; the others are looked for again at the next call).
+
+forget_late_replies(Me) :-
+    late_tags(Late),
+    (   Late == []
+    ->  true
+    ;   exclude(late_reply_taken(Me), Late, Left),
+        nb_setval(oro_events_late, Left)
+    ).
+
+late_reply_taken(Me, Tag) :-
+    thread_get_message(Me, reply(Tag, _), [timeout(0)]).
+
+%   late_tags(-Tags): the tags of the calling thread's replies still
+%   to come after their call gave up (a global variable of the thread).
+
+late_tags(Tags) :-
+    (   nb_current(oro_events_late, Tags0)
+    ->  Tags = Tags0
+    ;   Tags = []
     ).
 
 		 /*******************************
