@@ -22,6 +22,7 @@
 :- use_module(oro_methods_explain).
 :- use_module(oro_plugins).
 :- use_module(oro_kbapi).
+:- use_module('../prolog/oro/oro_redis', [oro_redis_options/1, oro_redis_stop/0]).
 
 /** <module> The ORO socket server
 
@@ -89,6 +90,11 @@ opt_type(db, db, atom).
 opt_type(rebuild_garbage, rebuild_garbage, nonneg).
 opt_type(kb_port, kb_port, between(0, 65535)).
 opt_type(kb, kb, boolean).
+opt_type(redis, redis, atom).                 % several robots: oro_redis
+opt_type(node, node, atom).
+opt_type(share, share, atom).
+opt_type(follow, follow, atom).
+opt_type(share_world, share_world, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
 
@@ -116,6 +122,13 @@ Options:
                      on port N (default 6971, or a free one with --port=0;
                      0 picks a free one)
   --no-kb            Serve the ORO protocol only
+  --redis=URL        Share knowledge with other oro nodes through the Redis
+                     server at redis://HOST:PORT (README, Several robots)
+  --node=NAME        Name of this node (required with --redis)
+  --share=M1,M2      Models whose changes are published (default myself)
+  --follow=N1,N2     Nodes whose models are applied here, each to the
+                     model named after it; * for every node
+  --share-world      Replicate the model world, which every node writes
   -h, --help         Show this help
 ").
 
@@ -316,6 +329,7 @@ oro_server_start(Options, Server) :-
     set_setting(oro_store:rebuild_garbage, Garbage),
     findall(P, member(plugin(P), Options), Plugins),
     oro_load_plugins(Plugins),
+    oro_redis_options(Options),
     tcp_socket(Socket),
     tcp_setopt(Socket, reuseaddr),
     (   Port0 =:= 0
@@ -392,6 +406,7 @@ oro_server_shutdown(Server) :-
     setting(shutdown_grace, Grace),
     findall(Mutex, connection(Mutex), Mutexes),
     include(lock_connection(Grace), Mutexes, Locked),
+    oro_redis_stop,
     oro_close,
     length(Mutexes, N),
     length(Locked, Idle),
