@@ -140,6 +140,8 @@ oro_redis_start(Options) :-
     ),
     oro_redis_stop,
     restore_applied,
+    flag(oro_redis_running, _, 1),
+    flag(oro_redis_outage, _, 0),
     with_mutex(oro_redis,
                forall(member(K-V, [ address-Address, node-Node,
                                     share-Share, follow-Follow,
@@ -224,18 +226,22 @@ names(Text, Names) :-
 oro_redis_stop :-
     (   config(node, _)
     ->  rdf_monitor(oro_redis:monitor, [-all]),
-        forall(member(T, [oro_redis_publisher, oro_redis_follower]),
-               stop_thread(T)),
+        flag(oro_redis_running, _, 0),
+        thread_send_message(oro_redis_out, stop),
+        thread_join(oro_redis_publisher, _),
+        thread_join(oro_redis_follower, _),
         catch(message_queue_destroy(oro_redis_out), _, true),
         with_mutex(oro_redis, retractall(config(_, _)))
     ;   true
     ).
 
-stop_thread(Thread) :-
-    (   catch(thread_signal(Thread, throw(oro_redis_stop)), _, fail)
-    ->  thread_join(Thread, _)
-    ;   true
-    ).
+%   running: the node has not been told to stop.  The publisher and
+%   follower threads look at it before each round trip and each pause
+%   (XREAD blocks 1 s at most), so oro_redis_stop/0 waits about a second
+%   at most; it sends the publisher a `stop` message too.
+
+running :-
+    flag(oro_redis_running, 1, 1).
 
 %!  oro_redis_status(-Status) is det.
 %
@@ -376,11 +382,15 @@ strip_model(Op0, Op) :-
 		 *******************************/
 
 publisher :-
-    catch(publisher_loop(none, [], 0.05), oro_redis_stop, true).
+    publisher_loop(none, [], 0.05).
 
 %   publisher_loop(+Conn, +Pending, +Pause): Pending are entries taken
 %   from the queue but not yet appended (Redis was unreachable).
 
+publisher_loop(Conn, _, _) :-
+    \+ running,
+    !,
+    close_connection(Conn).
 publisher_loop(Conn0, Pending0, Pause) :-
     setting(batch, Batch),
     (   Pending0 \== []
@@ -388,11 +398,15 @@ publisher_loop(Conn0, Pending0, Pause) :-
     ;   flag(oro_redis_snapshot_due, 1, 1)  % at start: publish at once
     ->  take_more(Batch, Pending)
     ;   thread_get_message(oro_redis_out, First),
-        Max is Batch - 1,
+        First \== stop
+    ->  Max is Batch - 1,
         take_more(Max, More),
         Pending = [First|More]
+    ;   Pending = stop
     ),
-    (   catch(publish(Conn0, Conn, Pending), E, publish_failed(E, Conn0))
+    (   Pending == stop
+    ->  publisher_loop(Conn0, [], Pause)    % running is false now
+    ;   catch(publish(Conn0, Conn, Pending), E, redis_failed(E, Conn0))
     ->  publisher_loop(Conn, [], 0.05)
     ;   sleep(Pause),
         Pause1 is min(2, Pause*2),
@@ -402,13 +416,21 @@ publisher_loop(Conn0, Pending0, Pause) :-
 take_more(0, []) :- !.
 take_more(N, [E|Es]) :-
     thread_get_message(oro_redis_out, E, [timeout(0)]),
+    E \== stop,
     !,
     N1 is N - 1,
     take_more(N1, Es).
 take_more(_, []).
 
-publish_failed(E, Conn) :-
-    print_message(warning, oro_redis(unreachable(E))),
+%   redis_failed(+Error, +Conn): Redis could not be reached (or
+%   answered an error): say so, close the connection and fail, so that
+%   the caller retries.
+
+redis_failed(E, Conn) :-
+    (   flag(oro_redis_outage, 0, 1)        % said once an outage
+    ->  print_message(warning, oro_redis(unreachable(E)))
+    ;   debug(oro(redis), 'Redis still unreachable: ~p', [E])
+    ),
     close_connection(Conn),
     fail.
 
@@ -420,6 +442,10 @@ connection(none, Conn) :-
     !,
     config(address, Address),
     redis_connect(Address, Conn, [reconnect(false)]),
+    (   flag(oro_redis_outage, 1, 0)
+    ->  print_message(informational, oro_redis(reconnected(Address)))
+    ;   true
+    ),
     debug(oro(redis), 'Connected to ~w', [Address]).
 connection(Conn, Conn).
 
@@ -542,14 +568,14 @@ snapshot_ids(Conn, Entries, Commands) :-
 		 *******************************/
 
 follower :-
-    catch(follower_loop(none, 0.05), oro_redis_stop, true).
+    follower_loop(none, 0.05).
 
+follower_loop(Conn, _) :-
+    \+ running,
+    !,
+    close_connection(Conn).
 follower_loop(Conn0, Pause) :-
-    (   catch(follow_once(Conn0, Conn), E,
-              ( print_message(warning, oro_redis(unreachable(E))),
-                close_connection(Conn0),
-                fail
-              ))
+    (   catch(follow_once(Conn0, Conn), E, redis_failed(E, Conn0))
     ->  follower_loop(Conn, 0.05)
     ;   sleep(Pause),
         Pause1 is min(2, Pause*2),
@@ -569,8 +595,7 @@ follow_once(Conn0, Conn) :-
         Command =.. [xread, count, Batch, block, 1000, streams|Args],
         (   redis(Conn, Command, Reply)
         ->  forall(member([Stream, Entries], Reply),
-                   forall(member(Entry, Entries),
-                          apply_entry(Stream, Entry)))
+                   apply_entries(Entries, Stream))
         ;   true                            % nothing new within 1 s
         )
     ).
@@ -637,8 +662,19 @@ id_before(Id, Before) :-
         format(atom(Before), '~d-18446744073709551615', [Ms1])
     ).
 
+%   apply_entries(+Entries, +Stream): apply Entries in order, up to the
+%   first that cannot be applied (read again from there next time).
+
+apply_entries([], _).
+apply_entries([Entry|Entries], Stream) :-
+    (   apply_entry(Stream, Entry)
+    ->  apply_entries(Entries, Stream)
+    ;   true
+    ).
+
 %   apply_entry(+Stream, +Entry): apply one entry and record its id, in
-%   one store transaction.
+%   one store transaction; fails if it cannot be applied (a malformed
+%   entry is skipped, with a warning).
 
 apply_entry(Stream0, [Id0, Fields]) :-
     to_atom(Stream0, Stream),
@@ -650,14 +686,23 @@ apply_entry(Stream0, [Id0, Fields]) :-
         memberchk(ops-Text, Pairs),
         catch(term_string(Ops, Text), _, fail),
         is_list(Ops)
-    ->  local_model(Stream, Node, Model),
-        oro_store_write(redis_apply(Stream),
-                        apply_ops(Kind, Stream, Id, Model, Ops)),
-        retractall(applied(Stream, _)),
-        assertz(applied(Stream, Id)),
-        debug(oro(redis), 'Applied ~w ~w (~w)', [Stream, Id, Kind])
+    ->  (   catch(apply_entry(Stream, Id, Node, Kind, Ops), E,
+                  ( print_message(warning, E),
+                    fail
+                  ))
+        ->  debug(oro(redis), 'Applied ~w ~w (~w)', [Stream, Id, Kind])
+        ;   print_message(warning, oro_redis(not_applied(Stream, Id))),
+            fail
+        )
     ;   print_message(warning, oro_redis(bad_entry(Stream, Id)))
     ).
+
+apply_entry(Stream, Id, Node, Kind, Ops) :-
+    local_model(Stream, Node, Model),
+    oro_store_write(redis_apply(Stream),
+                    apply_ops(Kind, Stream, Id, Model, Ops)),
+    retractall(applied(Stream, _)),
+    assertz(applied(Stream, Id)).
 
 fields_pairs([], []).
 fields_pairs([K0, V0|T], [K-V|Pairs]) :-
@@ -769,6 +814,11 @@ prolog:message(oro_redis(resync(N))) -->
 prolog:message(oro_redis(unreachable(E))) -->
     [ 'oro: Redis unreachable (retrying): ' ],
     translate(E).
+prolog:message(oro_redis(reconnected(Host:Port))) -->
+    [ 'oro: Redis at ~w:~w reachable again'-[Host, Port] ].
+prolog:message(oro_redis(not_applied(Stream, Id))) -->
+    [ 'oro: could not apply entry ~w of Redis stream ~w (retried on \c
+       the next read)'-[Id, Stream] ].
 prolog:message(oro_redis(bad_entry(Stream, Id))) -->
     [ 'oro: ignored a malformed entry ~w of Redis stream ~w'-[Id, Stream] ].
 
