@@ -155,6 +155,20 @@ with_redis(Goal) :-
     setup_call_cleanup(redis_start(Redis), call(Goal, Redis),
                        redis_stop(Redis)).
 
+:- meta_predicate with_nodes(+, +, +, 2).
+
+%   with_nodes(+Redis, +ArgsA, +ArgsB, :Goal): call(Goal, A, B) with
+%   two nodes started with ArgsA and ArgsB, stopped afterwards.
+
+with_nodes(Redis, ArgsA, ArgsB, Goal) :-
+    setup_call_cleanup(
+        node_start(Redis, ArgsA, A),
+        setup_call_cleanup(
+            node_start(Redis, ArgsB, B),
+            call(Goal, A, B),
+            node_stop(B)),
+        node_stop(A)).
+
 stream_entries(redis(_, Port, _), Stream, Entries) :-
     setup_call_cleanup(
         redis_connect('127.0.0.1':Port, C, [reconnect(false)]),
@@ -171,13 +185,8 @@ test(add_and_remove_replicated) :-
     with_redis(add_and_remove).
 
 add_and_remove(Redis) :-
-    setup_call_cleanup(
-        node_start(Redis, ['--node=robot_a'], A),
-        setup_call_cleanup(
-            node_start(Redis, ['--node=robot_b', '--follow=robot_a'], B),
-            add_and_remove(Redis, A, B),
-            node_stop(B)),
-        node_stop(A)).
+    with_nodes(Redis, ['--node=robot_a'],
+               ['--node=robot_b', '--follow=robot_a'], add_and_remove(Redis)).
 
 add_and_remove(Redis, A, B) :-
     add(A, ["cup1 rdf:type Cup", "cup1 isOn table1"]),
@@ -198,14 +207,8 @@ test(applied_change_fires_watcher) :-
     with_redis(fires_watcher).
 
 fires_watcher(Redis) :-
-    setup_call_cleanup(
-        node_start(Redis, ['--node=robot_a'], A),
-        setup_call_cleanup(
-            node_start(Redis, ['--node=robot_b', '--follow=robot_a'], B),
-            fires_watcher(A, B),
-            node_stop(B)),
-        node_stop(A)),
-    true.
+    with_nodes(Redis, ['--node=robot_a'],
+               ['--node=robot_b', '--follow=robot_a'], fires_watcher).
 
 fires_watcher(A, B) :-
     add(A, ["ball1 rdf:type Ball"]),
@@ -261,13 +264,8 @@ test(redis_killed_mid_stream) :-
     with_redis(redis_killed).
 
 redis_killed(Redis) :-
-    setup_call_cleanup(
-        node_start(Redis, ['--node=robot_a'], A),
-        setup_call_cleanup(
-            node_start(Redis, ['--node=robot_b', '--follow=robot_a'], B),
-            redis_killed(Redis, A, B),
-            node_stop(B)),
-        node_stop(A)).
+    with_nodes(Redis, ['--node=robot_a'],
+               ['--node=robot_b', '--follow=robot_a'], redis_killed(Redis)).
 
 redis_killed(redis(Pid, Port, Dir), A, B) :-
     cups(1, 20, First),
@@ -317,13 +315,8 @@ test(two_writers_converge) :-
 
 two_writers(Redis) :-
     Args = ['--share-world', '--follow=*'],
-    setup_call_cleanup(
-        node_start(Redis, ['--node=robot_a'|Args], A),
-        setup_call_cleanup(
-            node_start(Redis, ['--node=robot_b'|Args], B),
-            two_writers(Redis, A, B),
-            node_stop(B)),
-        node_stop(A)).
+    with_nodes(Redis, ['--node=robot_a'|Args], ['--node=robot_b'|Args],
+               two_writers(Redis)).
 
 two_writers(Redis, A, B) :-
     thread_create(write_colors(A, [a1, a2, a3, a4, a5]), T1, []),
