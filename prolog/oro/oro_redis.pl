@@ -55,16 +55,18 @@ Publishing:
 Following:
 
   - The follower thread reads (XREAD, blocking at most 1 s) every
-    followed stream from the last entry it applied, and applies each
-    entry as one store transaction, in stream order, together with the
-    record of its id (oro_persist_record/1): with a database directory
-    the restart goes on from there, exactly once.  A node that has
+    followed stream from the last entry it applied, and applies the
+    entries of each read (up to `batch`), in stream order, as one store
+    transaction together with the record of the last one's id
+    (oro_persist_record/1): with a database directory the restart goes
+    on from there, exactly once.  A node that has
     applied nothing of a stream, or whose last entry was trimmed away,
     starts from its last snapshot.
   - A snapshot entry makes each graph of the local model equal to the
     snapshot's (only the difference is written); a change entry adds
     and removes its triples.  The watchers see these transactions like
-    any other change.
+    any other change: the entries of one read as one change (a node
+    keeping up reads one entry at a time; one catching up, many).
   - World convergence: every node, the writer included, applies every
     entry of `oro:world` in stream order, and an added value of an
     owl:FunctionalProperty replaces the subject's other values.  So the
@@ -327,9 +329,12 @@ note(Sign, S, P, O, G) :-
     !,
     layer_key(Layer0, Layer),
     ops_queue(Queue),
-    Op =.. [Sign, Model, Layer, S, P, O],
-    thread_send_message(Queue, Op).
+    op(Sign, Layer, S, P, O, Op),
+    thread_send_message(Queue, Model-Op).
 note(_, _, _, _, _).
+
+op(a, Layer, S, P, O, a(Layer, S, P, O)).
+op(r, Layer, S, P, O, r(Layer, S, P, O)).
 
 layer_key(profile(P), P) :- !.
 layer_key(mask, mask).
@@ -360,22 +365,23 @@ queue_entries(Ops) :-
         )
     ).
 
-model_entries(Ops, Entries) :-
-    map_list_to_pairs(op_model, Ops, Pairs0),
-    keysort(Pairs0, Pairs),
-    group_pairs_by_key(Pairs, Groups),
-    findall(change(Model, ModelOps),
-            ( member(Model-ModelOps0, Groups),
-              maplist(strip_model, ModelOps0, ModelOps)
-            ),
-            Entries).
+%   model_entries(+Pairs, -Entries): the Model-Op pairs of a
+%   transaction as one change(Model, Ops) a model, the Ops in the order
+%   noted.  A transaction usually changes one model.
 
-op_model(Op, Model) :-
-    arg(1, Op, Model).
+model_entries([Model-Op|Pairs], Entries) :-
+    (   same_model(Pairs, Model)
+    ->  pairs_values(Pairs, Ops),
+        Entries = [change(Model, [Op|Ops])]
+    ;   keysort([Model-Op|Pairs], Sorted),   % stable: order kept
+        group_pairs_by_key(Sorted, Groups),
+        findall(change(M, Ops), member(M-Ops, Groups), Entries)
+    ).
 
-strip_model(Op0, Op) :-
-    Op0 =.. [Sign, _Model, Layer, S, P, O],
-    Op =.. [Sign, Layer, S, P, O].
+same_model([], _).
+same_model([M-_|Pairs], Model) :-
+    M == Model,
+    same_model(Pairs, Model).
 
 		 /*******************************
 		 *          PUBLISHER           *
@@ -662,22 +668,39 @@ id_before(Id, Before) :-
         format(atom(Before), '~d-18446744073709551615', [Ms1])
     ).
 
-%   apply_entries(+Entries, +Stream): apply Entries in order, up to the
-%   first that cannot be applied (read again from there next time).
+%   apply_entries(+Entries, +Stream): apply the entries of one read of
+%   Stream, in order, as one store transaction that also records the
+%   id of the last (oro_persist_record/1): all of them are applied, or
+%   none, and then read again from the same place next time (with a
+%   warning).  A malformed entry is skipped, with a warning.  One
+%   transaction a read rather than one an entry: with --db each
+%   transaction is flushed to disk, and a node catching up reads up to
+%   `batch` entries at a time.
 
-apply_entries([], _).
-apply_entries([Entry|Entries], Stream) :-
-    (   apply_entry(Stream, Entry)
-    ->  apply_entries(Entries, Stream)
-    ;   true
+apply_entries(Entries, Stream0) :-
+    to_atom(Stream0, Stream),
+    maplist(parse_entry(Stream), Entries, Parsed),
+    last(Parsed, Last),
+    arg(1, Last, LastId),
+    (   catch(oro_store_write(redis_apply(Stream),
+                              apply_parsed(Parsed, Stream, LastId)),
+              E,
+              ( print_message(warning, E),
+                fail
+              ))
+    ->  retractall(applied(Stream, _)),
+        assertz(applied(Stream, LastId)),
+        debug(oro(redis), 'Applied ~w up to ~w', [Stream, LastId])
+    ;   Parsed = [First|_],
+        arg(1, First, FirstId),
+        print_message(warning, oro_redis(not_applied(Stream, FirstId)))
     ).
 
-%   apply_entry(+Stream, +Entry): apply one entry and record its id, in
-%   one store transaction; fails if it cannot be applied (a malformed
-%   entry is skipped, with a warning).
+%   parse_entry(+Stream, +Entry, -Parsed): entry(Id, Model, Kind, Ops),
+%   or bad(Id).  The agent model of a node is created here, before the
+%   transaction that applies its entries.
 
-apply_entry(Stream0, [Id0, Fields]) :-
-    to_atom(Stream0, Stream),
+parse_entry(Stream, [Id0, Fields], Parsed) :-
     to_atom(Id0, Id),
     fields_pairs(Fields, Pairs),
     (   memberchk(kind-Kind, Pairs),
@@ -686,23 +709,16 @@ apply_entry(Stream0, [Id0, Fields]) :-
         memberchk(ops-Text, Pairs),
         catch(term_string(Ops, Text), _, fail),
         is_list(Ops)
-    ->  (   catch(apply_entry(Stream, Id, Node, Kind, Ops), E,
-                  ( print_message(warning, E),
-                    fail
-                  ))
-        ->  debug(oro(redis), 'Applied ~w ~w (~w)', [Stream, Id, Kind])
-        ;   print_message(warning, oro_redis(not_applied(Stream, Id))),
-            fail
-        )
-    ;   print_message(warning, oro_redis(bad_entry(Stream, Id)))
+    ->  local_model(Stream, Node, Model),
+        Parsed = entry(Id, Model, Kind, Ops)
+    ;   print_message(warning, oro_redis(bad_entry(Stream, Id))),
+        Parsed = bad(Id)
     ).
 
-apply_entry(Stream, Id, Node, Kind, Ops) :-
-    local_model(Stream, Node, Model),
-    oro_store_write(redis_apply(Stream),
-                    apply_ops(Kind, Stream, Id, Model, Ops)),
-    retractall(applied(Stream, _)),
-    assertz(applied(Stream, Id)).
+apply_parsed(Parsed, Stream, LastId) :-
+    forall(member(entry(_, Model, Kind, Ops), Parsed),
+           apply_ops(Kind, Model, Ops)),
+    oro_persist_record(redis_applied(Stream, LastId)).
 
 fields_pairs([], []).
 fields_pairs([K0, V0|T], [K-V|Pairs]) :-
@@ -721,12 +737,10 @@ local_model(_, Model, Model) :-
     ;   oro_create_agent(Model, Model)
     ).
 
-apply_ops(Kind, Stream, Id, Model, Ops) :-
-    (   Kind == snapshot
-    ->  apply_snapshot(Model, Ops)
-    ;   maplist(apply_op(Model), Ops)
-    ),
-    oro_persist_record(redis_applied(Stream, Id)).
+apply_ops(snapshot, Model, Ops) :-
+    apply_snapshot(Model, Ops).
+apply_ops(change, Model, Ops) :-
+    maplist(apply_op(Model), Ops).
 
 apply_op(Model, a(Layer, S, P, O)) :-
     (   Layer == mask
@@ -817,8 +831,8 @@ prolog:message(oro_redis(unreachable(E))) -->
 prolog:message(oro_redis(reconnected(Host:Port))) -->
     [ 'oro: Redis at ~w:~w reachable again'-[Host, Port] ].
 prolog:message(oro_redis(not_applied(Stream, Id))) -->
-    [ 'oro: could not apply entry ~w of Redis stream ~w (retried on \c
-       the next read)'-[Id, Stream] ].
+    [ 'oro: could not apply the entries of Redis stream ~w from ~w \c
+       (read again next time)'-[Stream, Id] ].
 prolog:message(oro_redis(bad_entry(Stream, Id))) -->
     [ 'oro: ignored a malformed entry ~w of Redis stream ~w'-[Id, Stream] ].
 
