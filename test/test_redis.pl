@@ -201,7 +201,18 @@ add_and_remove(Redis, A, B) :-
     assertion(\+ ( member([_, Fields], Echoes),
                    member(V, Fields),
                    sub_atom(V, _, _, _, cup1)
-                 )).
+                 )),
+    call_ok(B, reset, [], _),                   % robot_b forgets robot_a
+    assertion(wait_sees(B, robot_a, '[?x rdf:type Cup]', ["cup1"])),
+    assertion(sees(B, robot_a, '[?x isOn table1]', [])).
+
+test(bad_options_refused) :-
+    test_cli_server(['--redis=http://x', '--node=n'], Port1, true, Err1),
+    assertion(Port1 == none),
+    assertion(sub_string(Err1, _, _, _, "redis_url")),
+    test_cli_server(['--redis=redis://127.0.0.1:1'], Port2, true, Err2),
+    assertion(Port2 == none),
+    assertion(sub_string(Err2, _, _, _, "node")).
 
 test(applied_change_fires_watcher) :-
     with_redis(fires_watcher).

@@ -595,7 +595,13 @@ follow_once(Conn0, Conn) :-
     followed_streams(Conn, Streams),
     (   Streams == []
     ->  sleep(0.2)
-    ;   maplist(start_id(Conn), Streams, Ids),
+    ;   (   config(world, true),
+            \+ oro_model(world)                % a reset wiped it
+        ->  oro_create_model(world)
+        ;   true
+        ),
+        maplist(lost_model, Streams),
+        maplist(start_id(Conn), Streams, Ids),
         setting(batch, Batch),
         append(Streams, Ids, Args),
         Command =.. [xread, count, Batch, block, 1000, streams|Args],
@@ -621,6 +627,23 @@ followed_streams(Conn, Streams) :-
     ->  Streams = ['oro:world'|NodeStreams]
     ;   Streams = NodeStreams
     ).
+
+%   lost_model(+Stream): if the model Stream is applied to is gone (a
+%   reset wiped the models), read Stream again from its last snapshot
+%   (the world model, made again above, from the start of its stream).
+
+lost_model(Stream) :-
+    (   applied(Stream, _),
+        stream_model(Stream, Model),
+        \+ oro_model(Model)
+    ->  retractall(applied(Stream, _)),
+        debug(oro(redis), 'Model ~w gone: reading ~w again', [Model, Stream])
+    ;   true
+    ).
+
+stream_model('oro:world', world) :- !.
+stream_model(Stream, Node) :-
+    atom_concat('oro:node:', Node, Stream).
 
 to_atom(X, A) :-
     format(atom(A), '~w', [X]).
@@ -730,7 +753,9 @@ fields_pairs([K0, V0|T], [K-V|Pairs]) :-
 %   `world`, or the agent model named after the node that wrote it
 %   (created if needed).
 
-local_model('oro:world', _, world) :- !.
+local_model('oro:world', _, world) :-
+    !,
+    oro_create_model(world).
 local_model(_, Model, Model) :-
     (   oro_model(Model)
     ->  true
