@@ -116,6 +116,10 @@ Following:
 %       false).
 %
 %   @error domain_error(redis_url, URL) if URL is not redis://HOST:PORT.
+%   @error existence_error(option, Name) if redis(URL) or node(Name) is
+%   missing.
+%   @error existence_error(agent, Model) if a shared model does not
+%   exist.
 
 :- predicate_options(oro_redis_start/1, 1,
                      [ redis(atom), node(atom), share(list(atom)),
@@ -124,15 +128,15 @@ Following:
 
 oro_redis_start(Options) :-
     must_be(list, Options),
-    option(redis(URL), Options),
-    option(node(Node), Options),
+    required_option(redis(URL), Options),
+    required_option(node(Node), Options),
     must_be(atom, Node),
     redis_address(URL, Address),
     option(share(Share0), Options, [myself]),
     must_be(list(atom), Share0),
     maplist(oro_resolve_model, Share0, Share1),
     option(follow(Follow), Options, []),
-    must_be(oneof_or_list, Follow),
+    must_be(oro_redis_follow, Follow),
     option(share_world(World), Options, false),
     must_be(boolean, World),
     (   World == true
@@ -163,11 +167,18 @@ oro_redis_start(Options) :-
 
 :- multifile error:has_type/2.
 
-error:has_type(oneof_or_list, X) :-
+error:has_type(oro_redis_follow, X) :-
     (   X == (*)
     ->  true
     ;   is_list(X),
         maplist(atom, X)
+    ).
+
+required_option(Option, Options) :-
+    (   option(Option, Options)
+    ->  true
+    ;   functor(Option, Name, _),
+        existence_error(option, Name)
     ).
 
 %   redis_address(+URL, -Host:Port)
@@ -196,10 +207,7 @@ redis_address(URL, Host:Port) :-
 
 oro_redis_options(Options) :-
     (   option(redis(URL), Options)
-    ->  (   option(node(Node), Options)
-        ->  true
-        ;   existence_error(option, node)
-        ),
+    ->  required_option(node(Node), Options),
         option(share(ShareText), Options, myself),
         names(ShareText, Share),
         option(follow(FollowText), Options, ''),
