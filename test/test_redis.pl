@@ -448,4 +448,29 @@ snapshot_boxes(Redis, N) :-
                   ),
                   N).
 
+test(rebuild_publishes_nothing,
+     [ setup(oro_init([])),
+       cleanup(( oro_redis_stop,
+                 oro_reset
+               ))
+     ]) :-
+    with_redis(rebuild_publishes_nothing).
+
+rebuild_publishes_nothing(Redis) :-
+    Redis = redis(_, Port, _),
+    format(atom(URL), 'redis://127.0.0.1:~w', [Port]),
+    oro_redis_start([redis(URL), node(solo)]),
+    oro_add(myself, ["box1 rdf:type Box", "box2 rdf:type Box"]),
+    assertion(oro_redis_sync(20)),
+    stream_entries(Redis, 'oro:node:solo', Before),
+    assertion(oro_store_rebuild),
+    oro_add(myself, ["box3 rdf:type Box"]),
+    assertion(oro_redis_sync(20)),
+    stream_entries(Redis, 'oro:node:solo', After),
+    once(append(Before, [[_, Fields]], After)), % one entry more
+    once(append(_, [ops, Text|_], Fields)),
+    term_string(Ops, Text),
+    assertion(Ops = [a(longterm, _, _, _)]),
+    oro_redis_stop.
+
 :- end_tests(redis_buffer).

@@ -155,7 +155,8 @@ oro_redis_start(Options) :-
                                   ]),
                       assertz(config(K, V)))),
     message_queue_create(_, [alias(oro_redis_out)]),
-    rdf_monitor(oro_redis:monitor, [-all, +assert, +retract, +transaction]),
+    monitor_mask(Mask),
+    rdf_monitor(oro_redis:monitor, Mask),
     flag(oro_redis_dropped, _, 0),
     flag(oro_redis_snapshot_due, _, 1),
     retractall(published(_)),
@@ -293,6 +294,22 @@ oro_redis_sync(Seconds) :-
 		 /*******************************
 		 *           MONITOR            *
 		 *******************************/
+
+monitor_mask([-all, +assert, +retract, +transaction]).
+
+%   A store rebuild (oro_store_rebuild/0) empties rdf_db and fills it
+%   again with the same triples: the monitor is off meanwhile, or the
+%   whole store would be published again.
+
+:- multifile oro_store:rebuild_hook/1.
+
+oro_store:rebuild_hook(suspend) :-
+    config(node, _),
+    rdf_monitor(oro_redis:monitor, [-all]).
+oro_store:rebuild_hook(resume) :-
+    config(node, _),
+    monitor_mask(Mask),
+    rdf_monitor(oro_redis:monitor, Mask).
 
 %   monitor(+Event): the rdf_monitor/2 callback.  Tiny and total: it
 %   notes the changed triples of shared models in the writing thread's
