@@ -206,7 +206,7 @@ bench_cpus(CPUs) :-
 %!  bench_with_server(+Args, -Port, -Pid, :Goal) is semidet.
 %
 %   Run once(Goal) while the real server, `swipl
-%   server/oro_server.pl --port=0` followed by the command-line
+%   server/oro_server.pl --port=0 --http=0` followed by the command-line
 %   arguments Args, runs as a child process Pid listening on Port
 %   (read from its first line, `oro listening on 127.0.0.1:Port`).  The
 %   server is stopped afterwards (bench_stop_process/1), whatever Goal
@@ -216,7 +216,7 @@ bench_cpus(CPUs) :-
 
 bench_with_server(Args, Port, Pid, Goal) :-
     bench_server_script(Server),
-    bench_with_script(Server, ['--port=0'|Args], Port, Pid, Goal).
+    bench_with_script(Server, ['--port=0', '--http=0'|Args], Port, Pid, Goal).
 
 %!  bench_with_script(+Script, +Args, -Port, -Pid, :Goal) is semidet.
 %

@@ -31,6 +31,7 @@
 :- use_module('../server/oro_cli').
 :- use_module(oro/oro_save, [oro_save_cancel/0]).
 :- use_module(oro/oro_http).
+:- use_module(oro/oro_redis, [oro_redis_options/1, oro_redis_stop/0]).
 
 /** <module> The ORO socket server
 
@@ -124,6 +125,11 @@ opt_type(http, http, between(0, 65535)).
 opt_type(no_http, http, boolean(false)).
 opt_type(http_host, http_host, atom).
 opt_type(http_changes, http_changes, boolean).
+opt_type(redis, redis, atom).                 % several robots: oro_redis
+opt_type(node, node, atom).
+opt_type(share, share, atom).
+opt_type(follow, follow, atom).
+opt_type(share_world, share_world, boolean).
 
 usage("Usage: swipl server/oro_server.pl [option ...]
    or: swipl -g \"use_module(library(oro_server))\" -g oro_server_main -- [option ...]
@@ -184,6 +190,13 @@ Options:
   --no-http          No HTTP side
   --http-host=ADDR   Address of the HTTP side (default 127.0.0.1)
   --http-changes     Let Pengines clients change the store (default: no)
+  --redis=URL        Share knowledge with other oro nodes through the Redis
+                     server at redis://HOST:PORT (README, Several robots)
+  --node=NAME        Name of this node (required with --redis)
+  --share=M1,M2      Models whose changes are published (default myself)
+  --follow=N1,N2     Nodes whose models are applied here, each to the
+                     model named after it; * for every node
+  --share-world      Replicate the model world, which every node writes
   -h, --help         Show this help
 
 Settings, each also an option (and a setting(Name, Value) of --config):
@@ -511,6 +524,7 @@ oro_server_start(Options, Server) :-
     set_setting(oro_store:rebuild_garbage, Garbage),
     findall(P, member(plugin(P), Options), Plugins),
     oro_load_plugins(Plugins),
+    oro_redis_options(Options),
     tcp_socket(Socket),
     tcp_setopt(Socket, reuseaddr),
     (   Port0 =:= 0
@@ -639,6 +653,7 @@ oro_server_shutdown(Server) :-
     setting(shutdown_grace, Grace),
     findall(Mutex, connection(Mutex), Mutexes),
     include(lock_connection(Grace), Mutexes, Locked),
+    oro_redis_stop,
     oro_close,
     length(Mutexes, N),
     length(Locked, Idle),
