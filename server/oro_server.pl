@@ -362,6 +362,13 @@ oro_server_connections(Server, Count) :-
     ;   Count = 0                           % stopped, and none left
     ).
 
+%   The web inspector's count of connections: those of every server.
+
+:- multifile oro_http_inspector:socket_connections/1.
+
+oro_http_inspector:socket_connections(Count) :-
+    aggregate_all(sum(Busy), workers(_, Busy, _), Count).
+
 %!  oro_server_stop(+Server) is det.
 %
 %   Stop accepting connections and release the listening socket.
