@@ -1,5 +1,6 @@
 :- module(oro_http_inspector,
           [ oro_inspector_overview/1,   % -Overview
+            oro_inspector_models/1,     % -Models
             oro_inspector_classes/3,    % +Model, +Class, -Children
             oro_inspector_resource/3,   % +Model, +Resource, -Page
             oro_inspector_graph/4,      % +Model, +Resource, +Hops, -Graph
@@ -23,7 +24,7 @@
                           oro_resolve_model/2, oro_store_read/1]).
 :- use_module(oro_reason, [oro_holds/4]).
 :- use_module(oro_taxonomy, [oro_direct_subclasses/3, oro_instances/3,
-                             oro_direct_instances/3, oro_classes_of/3,
+                             oro_classes_of/3,
                              oro_direct_classes_of/3]).
 :- use_module(oro_lookup, [oro_lookup/3, oro_label/3, oro_exists/2]).
 :- use_module(oro_names, [oro_iri_name/2, oro_name_iri/2]).
@@ -59,12 +60,14 @@ Terms are JSON objects: `{"iri": IRI, "name": Short}` for a resource,
 Tag}` for a literal.
 */
 
-:- setting(max_rows, positive_integer, 200,
+:- setting(max_rows, positive_integer, 100,
            'Statements (and other rows) listed at most per section').
 :- setting(max_nodes, positive_integer, 60,
            'Resources drawn at most in a graph view').
 :- setting(max_deadlines, positive_integer, 20,
            'Forgetting deadlines listed at most in the overview').
+:- setting(max_watchers, positive_integer, 50,
+           'Watchers listed at most in the overview').
 
 :- multifile
     socket_connections/1.
@@ -82,6 +85,7 @@ Tag}` for a literal.
 :- http_handler(root(query), page, []).
 :- http_handler(root(web), web_file, [prefix]).
 :- http_handler(root(api/overview), api_overview, []).
+:- http_handler(root(api/models), api_models, []).
 :- http_handler(root(api/classes), api_classes, []).
 :- http_handler(root(api/lookup), api_lookup, []).
 :- http_handler(root(api/resource), api_resource, []).
@@ -122,6 +126,9 @@ web_path(Name, Path) :-
 
 api_overview(Request) :-
     api(Request, [], [], oro_inspector_overview(Reply), Reply).
+
+api_models(Request) :-
+    api(Request, [], [], oro_inspector_models(Models), _{models:Models}).
 
 api_classes(Request) :-
     api(Request, [class(C, [optional(true)])], [Model],
@@ -229,18 +236,17 @@ object_param(O0, Lit, DT, Lang, O) :-
 %   Overview is a dict: `models`, one dict per model (`name`, `triples`
 %   per memory profile, `total`, `watchers`); `connections`, the ORO
 %   socket connections (`null` without a socket server); `watchers`,
-%   the first `max_rows` watchers of all models; `watcher_count`;
+%   the first `max_watchers` watchers of all models; `watcher_count`;
 %   `deadlines`, the `max_deadlines` earliest pending forgetting
 %   deadlines of all models, and `deadline_count`.
 
 oro_inspector_overview(Overview) :-
-    findall(M, oro_model(M), Models0),
-    sort(Models0, Models),
+    oro_inspector_models(Models),
     maplist(model_summary, Models, Summaries, WatcherLists),
     append(WatcherLists, Watchers0),
     length(Watchers0, WatcherCount),
-    setting(max_rows, MaxRows),
-    take(MaxRows, Watchers0, Watchers),
+    setting(max_watchers, MaxWatchers),
+    take(MaxWatchers, Watchers0, Watchers),
     deadlines(Models, DeadlineCount, Deadlines),
     (   socket_connections(Connections)
     ->  true
@@ -253,6 +259,14 @@ oro_inspector_overview(Overview) :-
                   deadlines:Deadlines,
                   deadline_count:DeadlineCount
                 }.
+
+%!  oro_inspector_models(-Models) is det.
+%
+%   Models are the names of the models, sorted.
+
+oro_inspector_models(Models) :-
+    findall(M, oro_model(M), Models0),
+    sort(Models0, Models).
 
 model_summary(Model, Summary, Watchers) :-
     findall(Profile-Count,
@@ -315,9 +329,9 @@ take(N, List, Prefix) :-
 %
 %   Children are the direct subclasses of Class in Model (owl:Nothing
 %   left out), sorted by name, at most `max_rows`, each a dict:
-%   `class` (a term), `instances` (all of them, inferred included),
-%   `direct` (the direct ones) and `subclasses` (how many direct
-%   subclasses it has).
+%   `class` (a term), `instances` (all of them, inferred included) and
+%   `subclasses` (how many direct subclasses it has).  (The direct
+%   instances are left out: counting them costs 25 times more.)
 
 oro_inspector_classes(Model0, Class, Children) :-
     oro_resolve_model(Model0, Model),
@@ -333,12 +347,10 @@ oro_inspector_classes(Model0, Class, Children) :-
     maplist(class_json(Model, Nothing), Subs, Children).
 
 class_json(Model, Nothing, Class,
-           _{class:ClassJ, instances:All, direct:Direct, subclasses:NSub}) :-
+           _{class:ClassJ, instances:All, subclasses:NSub}) :-
     term_json(Class, ClassJ),
     oro_instances(Model, Class, Is),
     length(Is, All),
-    oro_direct_instances(Model, Class, Ds),
-    length(Ds, Direct),
     oro_direct_subclasses(Model, Class, Subs),
     exclude(==(Nothing), Subs, Subs1),
     length(Subs1, NSub).
@@ -371,8 +383,7 @@ lookup(Model, Text, Matches) :-
 oro_inspector_resource(Model0, R, Page) :-
     oro_resolve_model(Model0, Model),
     must_be(atom, R),
-    findall(M, oro_model(M), Models0),
-    sort(Models0, Models),
+    oro_inspector_models(Models),
     (   member(M, [Model|Models]),
         oro_exists(M, R)
     ->  true

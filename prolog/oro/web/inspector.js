@@ -100,19 +100,21 @@ function classItem(c) {
     } else if (sub) sub.hidden = !open;
   });
   li.append(toggle, term(c.class), " ",
-    el("span", {class: "muted"}, `${c.instances} instances (${c.direct} direct), ${c.subclasses} subclasses`));
+    el("span", {class: "muted"}, `${c.instances} instances, ${c.subclasses} subclasses`));
   return li;
 }
 
 async function classes() {
   const q = params.get("q");
-  main.replaceChildren(el("h1", {}, "Classes of ", model));
+  main.replaceChildren(el("h1", {}, q ? "Lookup in " : "Classes of ", model));
   if (q) {
     const r = await api("lookup", {q: q});
     main.append(el("h2", {}, `Lookup “${q}”`),
       r.matches.length === 0 ? el("p", {class: "muted"}, "No match.") :
         table(["resource", "kind", ""], r.matches.map(m =>
-          [term(m.term), m.kind, el("a", {href: url("/graph", {iri: m.term.iri})}, "graph")])));
+          [term(m.term), m.kind, el("a", {href: url("/graph", {iri: m.term.iri})}, "graph")])),
+      el("p", {}, el("a", {href: url("/classes")}, "the class tree")));
+    return;
   }
   const r = await api("classes");
   main.append(el("h2", {}, term(r.class)), el("ul", {class: "tree", id: "tree"}, r.children.map(classItem)));
@@ -263,16 +265,17 @@ function feed() {
   main.replaceChildren(el("h1", {}, "Live feed"),
     el("p", {}, "Model: ", filter, " ", status, countEl), log);
   showCounts();
-  api("overview").then(o => { for (const m of o.models) filter.append(el("option", {value: m.name}, m.name)); })
+  api("models").then(o => { for (const m of o.models) filter.append(el("option", {value: m}, m)); })
     .catch(showError);
   connect();
 }
 
 // ---- SPARQL ---------------------------------------------------------
 
-function query() {
+async function query() {
   const text = el("textarea", {id: "sparql"},
-    params.get("query") || "SELECT ?s ?p ?o WHERE { ?s ?p ?o } LIMIT 20");
+    params.get("query") || "PREFIX oro: <http://kb.openrobots.org#>\n" +
+      "SELECT ?p ?o WHERE { oro:myself ?p ?o }");
   const out = el("div", {id: "results"});
   async function run(ev) {
     if (ev) ev.preventDefault();
@@ -297,7 +300,7 @@ function query() {
   main.replaceChildren(el("h1", {}, "SPARQL over ", model),
     el("form", {id: "queryform", onsubmit: e => run(e).catch(showError)}, text,
       el("p", {}, el("button", {type: "submit"}, "Run"))), out);
-  run().catch(showError);
+  await run().catch(showError);
 }
 
 // ---- start ----------------------------------------------------------
@@ -328,8 +331,8 @@ async function start() {
     document.body.dataset.ready = "true";
   } catch (e) { showError(e); document.body.dataset.ready = "error"; }
   try {
-    const o = await api("overview");
-    select.replaceChildren(...o.models.map(m => el("option", m.name === model ? {selected: ""} : {}, m.name)));
+    const o = await api("models");
+    select.replaceChildren(...o.models.map(m => el("option", m === model ? {selected: ""} : {}, m)));
   } catch (e) { /* the page said it already */ }
 }
 
