@@ -315,6 +315,15 @@ open_page(Name, Path) :-
     shot(Name, Distinct),
     assertion(Distinct > 64).
 
+%   open_page(+Name, +Path, +Local): open_page/2 of Path followed by
+%   the IRI of Local, encoded.
+
+open_page(Name, Path, Local) :-
+    iri(Local, IRI),
+    uri_encoded(query_value, IRI, Q),
+    atom_concat(Path, Q, PathQ),
+    open_page(Name, PathQ).
+
 shot(Name, Distinct) :-
     browser(B),
     shots_dir(Dir),
@@ -363,18 +372,18 @@ test(lookup) :-
     assertion(text_in_page(main, "instance")).
 
 test(resource) :-
-    iri(zork, Z),
-    uri_encoded(query_value, Z, Q),
-    atom_concat('/resource?iri=', Q, Path),
-    open_page(resource, Path),
+    open_page(resource, '/resource?iri=', zork),
     assertion(text_in_page(main, "Inferred statements")),
-    assertion(text_in_page(main, "isUnder")).
+    assertion(text_in_page(main, "isUnder")),
+    browser(B),
+    browser_eval(B, "document.querySelector('a.why').click(), true", _),
+    assertion(test_wait_until(text_in_page(main, "Facts:"), 10)),
+    shot('resource-why', _),
+    browser_errors(B, Errors),
+    assertion(Errors == []).
 
 test(graph) :-
-    iri(zork, Z),
-    uri_encoded(query_value, Z, Q),
-    atom_concat('/graph?iri=', Q, Path),
-    open_page(graph, Path),
+    open_page(graph, '/graph?iri=', zork),
     assertion(text_in_page(graph, "banana1")).
 
 test(query) :-

@@ -313,13 +313,10 @@ deadline_json(D-(Model-rdf(S, P, O)-Profile),
               _{at:D, model:Model, profile:Profile, statement:Triple}) :-
     triple_json(rdf(S, P, O), Triple).
 
+%   take(+N, +List, -Prefix): the first N elements of List, or all.
+
 take(N, List, Prefix) :-
-    length(List, Len),
-    (   Len =< N
-    ->  Prefix = List
-    ;   length(Prefix, N),
-        append(Prefix, _, List)
-    ).
+    findall(X, limit(N, member(X, List)), Prefix).
 
 		 /*******************************
 		 *         CLASSES, LOOKUP      *
@@ -439,20 +436,16 @@ statements(Model, R, Kind, Triples, More) :-
     ),
     maplist(triple_json, Kept, Triples).
 
-statement(asserted, Model, R, rdf(S, P, O)) :-
-    (   S = R,
-        oro_asserted(Model, S, P, O)
-    ;   O = R,
-        oro_asserted(Model, S, P, O),
-        S \== R
-    ).
-statement(inferred, Model, R, rdf(S, P, O)) :-
-    (   S = R,
-        oro_holds(Model, S, P, O)
-    ;   O = R,
-        oro_holds(Model, S, P, O),
-        S \== R
+statement(Kind, Model, R, rdf(S, P, O)) :-
+    (   S = R
+    ;   O = R
     ),
+    kind_holds(Kind, Model, S, P, O).
+
+kind_holds(asserted, Model, S, P, O) :-
+    oro_asserted(Model, S, P, O).
+kind_holds(inferred, Model, S, P, O) :-
+    oro_holds(Model, S, P, O),
     \+ oro_asserted(Model, S, P, O).
 
 model_view(R, Model, _{model:Model, known:Known, classes:Classes,
@@ -461,7 +454,8 @@ model_view(R, Model, _{model:Model, known:Known, classes:Classes,
     ->  Known = true,
         classes_of(Model, R, Cs, _),
         maplist(term_json, Cs, Classes),
-        aggregate_all(count, statement(asserted, Model, R, _), Count)
+        aggregate_all(count, distinct(T, statement(asserted, Model, R, T)),
+                      Count)
     ;   Known = false,
         Classes = [],
         Count = 0
