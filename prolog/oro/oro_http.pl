@@ -17,6 +17,7 @@
 :- use_module(oro_http_sparql).
 :- use_module(oro_http_pengines).
 :- use_module(oro_http_inspector).
+:- use_module(oro_http_feed, [oro_feed_stop/0]).
 
 /** <module> The HTTP side of oro: SPARQL endpoint and Pengines
 
@@ -86,10 +87,12 @@ oro_http_port(Http, Port) :-
 
 %!  oro_http_stop(+Http) is det.
 %
-%   Stop the server Http and release its port.
+%   Stop the server Http and release its port, and the inspector's
+%   live feed (oro_feed_stop/0).
 
 oro_http_stop(Http) :-
-    http_stop_server(Http.host:Http.port, []).
+    http_stop_server(Http.host:Http.port, []),
+    oro_feed_stop.
 
 		 /*******************************
 		 *            PAGES             *
