@@ -613,6 +613,13 @@ oro_server_connections(Server, Count) :-
 oro_methods:server_figure(connections, Count) :-
     aggregate_all(count, connection(_), Count).
 
+%   The web inspector's count of connections: those of every server.
+
+:- multifile oro_http_inspector:socket_connections/1.
+
+oro_http_inspector:socket_connections(Count) :-
+    aggregate_all(sum(Busy), workers(_, Busy, _), Count).
+
 %!  oro_server_stop(+Server) is det.
 %
 %   Stop accepting connections and release the listening socket.

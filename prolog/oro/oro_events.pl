@@ -2341,8 +2341,21 @@ one_shot(_, true).
 %   ever waiting.  A full queue drops its subscriber.
 
 fire(Id, Content) :-
+    (   watcher(Id, Model, _, _, _)
+    ->  forall(fired(Model, Id, Content), true)
+    ;   true
+    ),
     forall(subscription(Id, Subscriber),
            send_firing(Subscriber, Id, Content)).
+
+:- multifile fired/3.
+
+%!  fired(+Model, +Id, +Content) is nondet.
+%
+%   Multifile hook, called in the watcher thread each time watcher Id
+%   of Model fires with Content (before its subscribers are sent it):
+%   the web inspector's live feed listens there.  A clause must be
+%   quick, must not block and must not throw.
 
 send_firing(Subscriber, Id, Content) :-
     (   subscriber(Subscriber, Queue, _, _)

@@ -16,12 +16,15 @@
 :- use_module(oro_store, [oro_graph_layer/3, oro_store_read/1]).
 :- use_module(oro_http_sparql).
 :- use_module(oro_http_pengines).
+:- use_module(oro_http_inspector).
+:- use_module(oro_http_feed, [oro_feed_stop/0]).
 
 /** <module> The HTTP side of oro: SPARQL endpoint and Pengines
 
 An HTTP server (SWI-Prolog's thread_httpd) next to the ORO socket
 server, serving the same store, read-only:
 
+  - `/`: the web inspector (oro_http_inspector);
   - `/sparql`: the SPARQL 1.1 Protocol endpoint (oro_http_sparql);
   - `/graphs`: a page listing the graphs a SPARQL dataset can name;
   - `/pengine/...`: Pengines, for Prolog planners in other processes
@@ -36,7 +39,6 @@ starts it with its `http` options.
 :- setting(workers, positive_integer, 4,
            'Threads serving HTTP requests').
 
-:- http_handler(root(.), home, []).
 :- http_handler(root(graphs), graphs_page, []).
 
 %!  oro_http_start(+Options, -Http) is det.
@@ -85,23 +87,16 @@ oro_http_port(Http, Port) :-
 
 %!  oro_http_stop(+Http) is det.
 %
-%   Stop the server Http and release its port.
+%   Stop the server Http and release its port, and the inspector's
+%   live feed (oro_feed_stop/0).
 
 oro_http_stop(Http) :-
-    http_stop_server(Http.host:Http.port, []).
+    http_stop_server(Http.host:Http.port, []),
+    oro_feed_stop.
 
 		 /*******************************
 		 *            PAGES             *
 		 *******************************/
-
-home(_Request) :-
-    reply_html_page(title('oro'),
-                    [ h1('oro'),
-                      p([ 'SPARQL 1.1 endpoint: ', a(href('sparql'), '/sparql'),
-                          ' (GET or POST ', code(query), ')' ]),
-                      p([ 'Graphs: ', a(href('graphs'), '/graphs') ]),
-                      p([ 'Pengines: ', code('/pengine') ])
-                    ]).
 
 graphs_page(_Request) :-
     oro_store_read(findall(Row, graph_row(Row), Rows)),
