@@ -240,6 +240,10 @@ fires_watcher(A, B) :-
 
 :- begin_tests(redis_recovery, [condition(redis_available)]).
 
+%   robot_b follows robot_a with --db, is killed with kill -9, misses
+%   10,000 changes (and a removal), and restarts: it must then see
+%   exactly robot_a's cups, none missing, none removed still there.
+
 test(restart_catches_up_from_db) :-
     with_redis(restart_catches_up).
 
@@ -255,7 +259,7 @@ restart_catches_up(Redis) :-
           node_start(Redis, BArgs, B1),
           assertion(wait_sees(B1, robot_a, '[?x isIn box1]', First)),
           node_stop(B1),                        % kill -9
-          cups(51, 300, Later),
+          cups(51, 10050, Later),               % 10,000 changes missed
           forall(member(S, Later),
                  ( cup_statements([S], [St]), add(A, [St]) )),
           remove(A, ["cup7 isIn box1"]),
