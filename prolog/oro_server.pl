@@ -186,7 +186,8 @@ Options:
                      instead of just after: liboro then never loses its
                      connection over them (README, Clients)
   --http=PORT        Serve SPARQL and Pengines over HTTP on PORT
-                     (default 6970; 0 picks a free one)
+                     (default 6970, or a free one with --port=0;
+                     0 picks a free one)
   --no-http          No HTTP side
   --http-host=ADDR   Address of the HTTP side (default 127.0.0.1)
   --http-changes     Let Pengines clients change the store (default: no)
@@ -275,6 +276,8 @@ oro_server_main(Argv) :-
     kb_port_option(Options, Options1),
     (   option(http(_), Options1)
     ->  Options2 = Options1
+    ;   option(port(0), Options1)       % a free port: the others too
+    ->  Options2 = [http(0)|Options1]
     ;   Options2 = [http(6970)|Options1]
     ),
     catch(( start_log(Options2),
