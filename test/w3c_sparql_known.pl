@@ -11,10 +11,6 @@ when a listed one passes: keep it, and the README's table, in step.
 
 w3c_known_failure('sparql10/basic', 'Basic - Quotes 3', "not analysed yet: an extra row").
 w3c_known_failure('sparql10/basic', 'Basic - Term 8', "not analysed yet: no rows").
-w3c_known_failure('sparql10/cast', 'Cast to xsd:dateTime', "xsd:dateTime casts are not implemented").
-w3c_known_failure('sparql10/cast', 'Cast to xsd:decimal', "not analysed yet: casts keep rows XSD rejects").
-w3c_known_failure('sparql10/cast', 'Cast to xsd:double', "not analysed yet: casts keep rows XSD rejects").
-w3c_known_failure('sparql10/cast', 'Cast to xsd:float', "not analysed yet: casts keep rows XSD rejects").
 w3c_known_failure('sparql10/distinct', 'All: Distinct', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/distinct', 'Numbers: Distinct', "as All: Distinct").
 w3c_known_failure('sparql10/expr-builtin', 'sameTerm-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").
@@ -34,8 +30,6 @@ w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: litera
 w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
-w3c_known_failure('sparql11/functions', 'BNODE(str)', "BNODE(str) is not implemented (BNODE() is)").
-w3c_known_failure('sparql11/functions', 'REPLACE() with captured substring', "REPLACE whose pattern has a group that does not match ($2 of (ab)|(a)): re_replace/5 of SWI-Prolog 9.0.4 raises an error, so the value is unbound").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").
 w3c_known_failure('sparql11/syntax-query', '\\u unicode codepoint escaping in literal using partial surrogate pair', "a \\u escape of a lone surrogate is accepted").

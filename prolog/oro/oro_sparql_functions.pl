@@ -67,6 +67,7 @@ cast_type(xsd:decimal, decimal).
 cast_type(xsd:float, float).
 cast_type(xsd:double, double).
 cast_type(xsd:boolean, boolean).
+cast_type(xsd:dateTime, dateTime).
 
 type_literal(Type, Lex, literal(type(Type, Lex))).
 
@@ -87,7 +88,7 @@ kind_rank(double, 3).
 %   The effective boolean value of Expr in Mu is true.
 
 expr_true(E, Mu, Ctx) :-
-    eval_expr(E, Mu, Ctx, V),
+    once(eval_expr(E, Mu, Ctx, V)),
     ebv(V, true).
 
 %!  eval_expr(+Expr, +Mu, +Ctx, -Value) is semidet.
@@ -174,10 +175,15 @@ eval_expr(agg(Name, Distinct, Arg, Sep), _, Ctx, V) :-
     Ctx = ctx(M, S, Members, C),
     Members \== none,
     aggregate_value(Name, Distinct, Arg, Sep, Members, ctx(M, S, none, C), V).
+eval_expr(fn(bnode, [A]), Mu, Ctx, V) :-
+    !,
+    eval_expr(A, Mu, Ctx, VA),
+    simple_string(VA, Lex),
+    labelled_bnode(Mu, Lex, V).
 eval_expr(fn(Name, Args), Mu, Ctx, V) :-
     !,
     maplist(eval_arg(Mu, Ctx), Args, Vs),
-    function(Name, Vs, V).
+    once(function(Name, Vs, V)).
 eval_expr(E, Mu, Ctx, V) :-
     arithmetic(E, Mu, Ctx, V).
 
@@ -330,6 +336,30 @@ date_stamp(Lex, Stamp) :-
         Stamp is Stamp0 + 86400
     ;   catch(parse_time(Lex, iso_8601, Stamp), _, fail)
     ).
+
+%   xsd_date_time//0: the lexical space of xsd:dateTime,
+%   -?YYYY-MM-DDThh:mm:ss(.s+)?(Z|(+|-)hh:mm)?
+
+xsd_date_time -->
+    optional_minus,
+    digits(Y), { length(Y, NY), NY >= 4 },
+    "-", two_digits, "-", two_digits, "T",
+    two_digits, ":", two_digits, ":", two_digits,
+    optional_fraction,
+    optional_zone.
+
+optional_minus --> "-", !.
+optional_minus --> [].
+
+two_digits --> [A, B], { code_type(A, digit), code_type(B, digit) }.
+
+optional_fraction --> ".", !, digits([_|_]).
+optional_fraction --> [].
+
+optional_zone --> "Z", !.
+optional_zone --> [S], { S == 0'+ ; S == 0'- }, !,
+    two_digits, ":", two_digits.
+optional_zone --> [].
 
 boolean_lexical(true, true).
 boolean_lexical(false, false).
@@ -984,6 +1014,24 @@ percent_bytes([B|Bs]) -->
     Hex,
     percent_bytes(Bs).
 
+%   labelled_bnode(+Mu, +Lex, -BNode): BNODE(Lex) in the solution Mu:
+%   the same blank node for the same string in the same solution, a
+%   different one in any other solution (SPARQL 1.1 §17.4.2.9).  Its
+%   label is a digest of both, so it is new to the store; labels are
+%   scoped to one result set, where distinct solutions give distinct
+%   labels.  The solution is its bindings less those made by BNODE,
+%   so that two BNODE(?s) of one SELECT agree when their ?s do.
+
+labelled_bnode(Mu, Lex, BNode) :-
+    exclude(made_bnode_binding, Mu, Mu1),
+    msort(Mu1, Key),
+    variant_sha1(Key-Lex, Hash),
+    atom_concat('_:sparql-bnode-', Hash, BNode).
+
+made_bnode_binding(_-V) :-
+    atom(V),
+    sub_atom(V, 0, _, _, '_:sparql-bnode-').
+
 %   XSD casts (SPARQL 1.1 §17.5).
 
 cast(string, X, V) :-
@@ -1001,6 +1049,16 @@ cast(boolean, X, V) :-
         boolean_lexical(Lex, B)
     ),
     boolean_term(B, V).
+cast(dateTime, X, literal(type(T, Lex))) :-
+    rdf_equal(xsd:dateTime, T),
+    (   X = literal(type(T, Lex))
+    ->  true
+    ;   simple_string(X, Lex0),
+        normalize_space(atom(Lex), Lex0),
+        atom_codes(Lex, Codes),
+        phrase(xsd_date_time, Codes),
+        date_stamp(Lex, _)
+    ).
 cast(Kind, X, V) :-
     memberchk(Kind, [integer, decimal, float, double]),
     (   value_class(X, boolean(B))
@@ -1147,14 +1205,65 @@ regex_match(Text, Pattern0, Flags, R) :-
           ),
           _, fail).
 
+%   regex_replace(+Text, +Pattern, +With, +Flags, -Result) is semidet.
+%
+%   fn:replace: every match of Pattern in Text replaced by With, whose
+%   $N is the text of group N (empty when the group took no part in the
+%   match) and \$, \\ a dollar and a backslash.  The substitution is
+%   ours: re_replace/5 of SWI-Prolog 9.0.4 raises on a group that did
+%   not match.  Fails (an error) on a bad replacement or a pattern that
+%   matches the empty string, as XPath says.
+
 regex_replace(Text, Pattern0, With, Flags, Result) :-
     regex_options(Flags, Options, Quote),
     regex_pattern(Pattern0, Quote, Pattern),
     atom_string(Text, String),
-    atom_string(With, WithString),
-    catch(re_replace(Pattern/g, WithString, String, Result0, Options),
+    atom_codes(With, WithCodes),
+    phrase(replacement(Parts), WithCodes),
+    catch(re_foldl(replace_match(String, Parts), Pattern, String,
+                   0-Codes, End-Tail, [capture_type(range)|Options]),
           _, fail),
-    atom_string(Result, Result0).
+    string_length(String, Length),
+    Rest is Length - End,
+    sub_string(String, End, Rest, _, After),
+    string_codes(After, Tail),
+    atom_codes(Result, Codes).
+
+replace_match(String, Parts, Match, Start-Codes, End-Tail) :-
+    get_dict(0, Match, From-Len),
+    Len > 0,
+    Before is From - Start,
+    sub_string(String, Start, Before, _, Prefix),
+    string_codes(Prefix, PrefixCodes),
+    append(PrefixCodes, Codes1, Codes),
+    foldl(replacement_part(String, Match), Parts, Codes1, Tail),
+    End is From + Len.
+
+replacement_part(_, _, text(C), [C|T], T).
+replacement_part(String, Match, group(N), Codes, Tail) :-
+    (   get_dict(N, Match, From-Len)
+    ->  sub_string(String, From, Len, _, Group),
+        string_codes(Group, GroupCodes),
+        append(GroupCodes, Tail, Codes)
+    ;   Codes = Tail
+    ).
+
+replacement([Part|Parts]) -->
+    replacement_part(Part),
+    !,
+    replacement(Parts).
+replacement([]) --> [].
+
+replacement_part(text(0'$)) --> "\\$", !.
+replacement_part(text(0'\\)) --> "\\\\", !.
+replacement_part(group(N)) -->
+    "$",
+    !,
+    digits(Ds),
+    { Ds \== [], number_codes(N, Ds) }.
+replacement_part(text(C)) -->
+    [C],
+    { C \== 0'\\ }.
 
 :- else.
 

@@ -1579,5 +1579,5 @@ function_arity(now, 0, 0).
 function_arity(rand, 0, 0).
 function_arity(uuid, 0, 0).
 function_arity(struuid, 0, 0).
-function_arity(bnode, 0, 0).
+function_arity(bnode, 0, 1).
 

@@ -179,6 +179,11 @@ test('fn-strings-1','zoo.ttl','fn-strings-1.rq',rows([a,b,c,d,e,f,g],[[a=int(4),
 test('fn-strings-2','zoo.ttl','fn-strings-2.rq',rows([a,b,c,d,e,f],[[a=bool(true),b=bool(true),c=bool(true),d="a",e="b-c",f=""]])).
 test('fn-incompatible','literals.ttl','fn-incompatible.rq',rows([r],[[]])).
 test('fn-replace','literals.ttl','fn-replace.rq',rows([a,b,c],[[a="bANANa",b="xanana",c="a[b]c"]])).
+test('fn-replace-group','literals.ttl','fn-replace-group.rq',rows([a,b,c,d],[[a="[1=ab][2=]cd",b="a\\b"]])).
+test('fn-bnode-str','literals.ttl','fn-bnode-str.rq',rows([x,same,diff,blank],[[x="p",same=bool(true),diff=bool(false),blank=bool(true)]])).
+test('fn-bnode-str-rows','literals.ttl','fn-bnode-str-rows.rq',rows([n],[[n=int(2)]])).
+test('fn-cast-filter','literals.ttl','fn-cast-filter.rq',rows([x],[[x=b1],[x=b2],[x=d1],[x=i1],[x=i2],[x=z1],[x=f1],[x=e1]])).
+test('fn-cast-datetime','literals.ttl','fn-cast-datetime.rq',rows([a,b,c,d,e],[[a=typed("2002-10-10T17:00:00Z",xsd:dateTime),b=typed("2002-10-10T17:00:00.5+02:00",xsd:dateTime),d=typed("2020-01-02T10:00:00Z",xsd:dateTime)]])).
 test('fn-regex','literals.ttl','fn-regex.rq',rows([x],[[x=s2]])).
 test('fn-regex-flags','literals.ttl','fn-regex-flags.rq',rows([a,b,c,d],[[a=bool(true),b=bool(false),c=bool(true),d=bool(true)]])).
 test('fn-if-coalesce','literals.ttl','fn-if-coalesce.rq',rows([a,b,c],[[a="yes",c="c"]])).
