@@ -32,4 +32,3 @@ w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").
-w3c_known_failure('sparql11/syntax-query', '\\u unicode codepoint escaping in literal using partial surrogate pair', "a \\u escape of a lone surrogate is accepted").

@@ -184,6 +184,7 @@ test('fn-bnode-str','literals.ttl','fn-bnode-str.rq',rows([x,same,diff,blank],[[
 test('fn-bnode-str-rows','literals.ttl','fn-bnode-str-rows.rq',rows([n],[[n=int(2)]])).
 test('fn-cast-filter','literals.ttl','fn-cast-filter.rq',rows([x],[[x=b1],[x=b2],[x=d1],[x=i1],[x=i2],[x=z1],[x=f1],[x=e1]])).
 test('fn-cast-datetime','literals.ttl','fn-cast-datetime.rq',rows([a,b,c,d,e],[[a=typed("2002-10-10T17:00:00Z",xsd:dateTime),b=typed("2002-10-10T17:00:00.5+02:00",xsd:dateTime),d=typed("2020-01-02T10:00:00Z",xsd:dateTime)]])).
+test('fn-surrogate-pair','literals.ttl','fn-surrogate-pair.rq',rows([n,i],[[n=int(1),i="http://e/\u00e9"]])).
 test('fn-regex','literals.ttl','fn-regex.rq',rows([x],[[x=s2]])).
 test('fn-regex-flags','literals.ttl','fn-regex-flags.rq',rows([a,b,c,d],[[a=bool(true),b=bool(false),c=bool(true),d=bool(true)]])).
 test('fn-if-coalesce','literals.ttl','fn-if-coalesce.rq',rows([a,b,c],[[a="yes",c="c"]])).
@@ -229,6 +230,7 @@ test('sub-02','zoo.ttl','sub-02.rq',rows([x],[[x=mona]])).
 test('bad-01','zoo.ttl','bad-01.rq',syntax_error(2,1)).
 test('bad-02','zoo.ttl','bad-02.rq',syntax_error(1,24)).
 test('bad-03','zoo.ttl','bad-03.rq',syntax_error(1,37)).
+test('bad-21','zoo.ttl','bad-21.rq',syntax_error(1,28)).
 test('bad-04','zoo.ttl','bad-04.rq',syntax_error(1,1)).
 test('bad-05','zoo.ttl','bad-05.rq',syntax_error(1,28)).
 test('bad-06','zoo.ttl','bad-06.rq',syntax_error(1,28)).
