@@ -846,3 +846,23 @@ test(iri_default_namespace, [true(I == 'http://kb.openrobots.org#a')]) :-
     oro_sparql(myself, "SELECT (IRI(\"a\") AS ?i) WHERE {}", select(_, [[i-I]])).
 
 :- end_tests(sparql_iri_function).
+
+%   A simple literal in a pattern is an RDF term over the asserted
+%   triples: "x" matches "x" and "x"^^xsd:string (one term in RDF 1.1),
+%   never "x"@en nor "x"^^T (rdf_db's literal(x) matches all of them).
+
+:- begin_tests(sparql_literal_terms, [setup(sq_forget_data), cleanup(sq_forget_data)]).
+
+test(simple_literal_constant, [true(Rows == [[s-a], [s-d]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s oro:label \"x\" }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows1),
+    msort(Rows1, Rows).
+test(typed_constant, [true(Rows == [[s-c]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s oro:label \"x\"^^oro:custom }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows).
+
+:- end_tests(sparql_literal_terms).

@@ -576,7 +576,10 @@ source_triple(Model, S, P, O) :-
 
 %   stored_object(+O, -Pattern, -Test): language tags are case
 %   insensitive (RDF 1.1): a language-tagged constant "x"@EN matches the
-%   stored "x"@en; rdf_db compares tags as they are written.
+%   stored "x"@en; rdf_db compares tags as they are written.  A simple
+%   literal "x" (the same term as "x"^^xsd:string, which rdf_db stores
+%   as "x") matches only itself: rdf_db's literal(x) would also match
+%   "x"@en and "x"^^T.
 
 stored_object(O, Pattern, Test) :-
     (   nonvar(O),
@@ -584,6 +587,11 @@ stored_object(O, Pattern, Test) :-
         atom(Lang)
     ->  Pattern = literal(lang(Stored, Lex)),
         Test = same_language(Lang, Stored)
+    ;   nonvar(O),
+        O = literal(Lex),
+        atom(Lex)
+    ->  Pattern = literal(exact(Lex), Stored),
+        Test = (Stored == Lex)
     ;   Pattern = O,
         Test = true
     ).
