@@ -849,7 +849,8 @@ test(iri_default_namespace, [true(I == 'http://kb.openrobots.org#a')]) :-
 
 %   A simple literal in a pattern is an RDF term over the asserted
 %   triples: "x" matches "x" and "x"^^xsd:string (one term in RDF 1.1),
-%   never "x"@en nor "x"^^T (rdf_db's literal(x) matches all of them).
+%   never "x"@en nor "x"^^T (rdf_db's literal(x) matches all of them);
+%   +5 is the literal "+5"^^xsd:integer (INTEGER_POSITIVE keeps its sign).
 
 :- begin_tests(sparql_literal_terms, [setup(sq_forget_data), cleanup(sq_forget_data)]).
 
@@ -862,6 +863,12 @@ test(simple_literal_constant, [true(Rows == [[s-a], [s-d]])]) :-
 test(typed_constant, [true(Rows == [[s-c]])]) :-
     sq_use_data('terms.ttl'),
     oro_sparql(myself, "SELECT ?s WHERE { ?s oro:label \"x\"^^oro:custom }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows).
+
+test(signed_number_constant, [true(Rows == [[s-e]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s ?p +5 }",
                select([s], Rows0), [infer(false)]),
     maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows).
 

@@ -9,7 +9,6 @@ when a listed one passes: keep it, and the README's table, in step.
 */
 
 
-w3c_known_failure('sparql10/basic', 'Basic - Term 8', "not analysed yet: no rows").
 w3c_known_failure('sparql10/distinct', 'All: Distinct', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/distinct', 'Numbers: Distinct', "as All: Distinct").
 w3c_known_failure('sparql10/expr-builtin', 'sameTerm-eq', "not analysed yet (probably rdf_db reading numeric literals by value)").

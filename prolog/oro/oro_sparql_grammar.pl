@@ -1190,7 +1190,7 @@ numeric_literal(T) -->
     (   tok(punct(-))
     ->  { Sign = '-' }
     ;   tok(punct(+))
-    ->  { Sign = '' }
+    ->  { Sign = '+' }
     ;   { Sign = '' }
     ),
     tok(num(Kind, Lex0)),
