@@ -18,8 +18,6 @@ w3c_known_failure('sparql10/expr-builtin', 'str-1', "not analysed yet (probably 
 w3c_known_failure('sparql10/expr-builtin', 'str-2', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric constant in a pattern matches by value in rdf_db (\"01\"^^xsd:integer matches 1), not as an RDF term").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
-w3c_known_failure('sparql10/open-world', 'date-2', "not analysed yet: FILTER on xsd:date values").
-w3c_known_failure('sparql10/open-world', 'date-3', "not analysed yet: FILTER on xsd:date values").
 w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
 w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").

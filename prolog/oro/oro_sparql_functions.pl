@@ -273,8 +273,10 @@ ebv_class(invalid(T, _), false) :-
 %!  value_class(+Term, -Class) is semidet.
 %
 %   Class is the value of the literal Term for comparisons:
-%   number(Kind, N), string(S, Lang), boolean(B), datetime(Type, T)
-%   (an xsd:dateTime and an xsd:date are not comparable), ...
+%   number(Kind, N), string(S, Lang), boolean(B), datetime(Type, T,
+%   Zoned) (T the time stamp, a value without time zone read as UTC,
+%   Zoned true or false; an xsd:dateTime and an xsd:date are not
+%   comparable), ...
 
 value_class(literal(V), C) :-
     !,
@@ -302,8 +304,8 @@ literal_class(type(T, Lex0), C) :-
         ;   C = invalid(T, Lex)
         )
     ;   date_type(T)
-    ->  (   date_stamp(Lex, Stamp)
-        ->  C = datetime(T, Stamp)
+    ->  (   date_value(T, Lex, Stamp, Zoned)
+        ->  C = datetime(T, Stamp, Zoned)
         ;   C = invalid(T, Lex)
         )
     ;   C = typed(T, Lex)
@@ -360,6 +362,62 @@ optional_zone --> "Z", !.
 optional_zone --> [S], { S == 0'+ ; S == 0'- }, !,
     two_digits, ":", two_digits.
 optional_zone --> [].
+
+%   date_value(+Type, +Lex, -Stamp, -Zoned): the value of an xsd:date
+%   (midnight starting the day, in its time zone if it has one) or
+%   xsd:dateTime.
+
+date_value(Type, Lex, Stamp, Zoned) :-
+    (   rdf_equal(Type, xsd:date)
+    ->  sub_atom(Lex, B, 1, _, '-'),
+        B > 0,
+        sub_atom(Lex, 0, B, _, Year),
+        Start is B + 6,
+        sub_atom(Lex, 0, Start, After, Day),
+        sub_atom(Lex, Start, After, 0, Zone),
+        atom_length(Year, YL), YL >= 4,
+        atomic_list_concat([Day, 'T00:00:00', Zone], DateTime)
+    ;   DateTime = Lex
+    ),
+    date_stamp(DateTime, Stamp),
+    (   time_zoned(DateTime)
+    ->  Zoned = true
+    ;   Zoned = false
+    ).
+
+time_zoned(Lex) :-
+    (   sub_atom(Lex, _, 1, 0, 'Z')
+    ->  true
+    ;   sub_atom(Lex, B, 6, 0, Zone),
+        B >= 19,
+        sub_atom(Zone, 0, 1, _, Sign),
+        memberchk(Sign, ['+', '-']),
+        sub_atom(Zone, 3, 1, _, ':')
+    ).
+
+%   datetime_order(+X, +ZX, +Y, +ZY, -Order): XSD's order of date and
+%   time values: a value without time zone is any time from 14 hours
+%   before to 14 hours after the same time in UTC, so it is ordered
+%   against a zoned value only when the whole range is on one side
+%   (fails otherwise: indeterminate).
+
+datetime_order(X, Z, Y, Z, O) :-
+    !,
+    number_order(X, Y, O).
+datetime_order(X, false, Y, true, O) :-
+    !,
+    Span = 50400,
+    (   X + Span < Y
+    ->  O = (<)
+    ;   X - Span > Y
+    ->  O = (>)
+    ).
+datetime_order(X, true, Y, false, O) :-
+    datetime_order(Y, false, X, true, O0),
+    inverse_order(O0, O).
+
+inverse_order(<, >).
+inverse_order(>, <).
 
 boolean_lexical(true, true).
 boolean_lexical(false, false).
@@ -500,7 +558,11 @@ equal_terms(A, B, R) :-
 equal_class(number(_, X), number(_, Y), R) :- !, truth_of(X =:= Y, R).
 equal_class(string(X, _), string(Y, _), R) :- !, truth_of(X == Y, R).
 equal_class(boolean(X), boolean(Y), R) :- !, truth_of(X == Y, R).
-equal_class(datetime(T, X), datetime(T, Y), R) :- !, truth_of(X =:= Y, R).
+equal_class(datetime(T, X, ZX), datetime(T, Y, ZY), R) :-
+    !,
+    datetime_order(X, ZX, Y, ZY, O),
+    truth_of(O == (=), R).
+equal_class(datetime(_, _, _), datetime(_, _, _), false) :- !.
 equal_class(lang(X, TX), lang(Y, TY), R) :-
     !,
     downcase_atom(TX, LX),
@@ -532,7 +594,9 @@ truth_of(Goal, R) :-
 order_class(number(_, X), number(_, Y), O) :- !, number_order(X, Y, O).
 order_class(string(X, _), string(Y, _), O) :- !, compare(O, X, Y).
 order_class(boolean(X), boolean(Y), O) :- !, compare(O, X, Y).
-order_class(datetime(T, X), datetime(T, Y), O) :- !, number_order(X, Y, O).
+order_class(datetime(T, X, ZX), datetime(T, Y, ZY), O) :-
+    !,
+    datetime_order(X, ZX, Y, ZY, O).
 
 number_order(X, Y, O) :-
     (   X < Y
