@@ -18,10 +18,6 @@ w3c_known_failure('sparql10/expr-builtin', 'str-1', "not analysed yet (probably 
 w3c_known_failure('sparql10/expr-builtin', 'str-2', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric constant in a pattern matches by value in rdf_db (\"01\"^^xsd:integer matches 1), not as an RDF term").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
-w3c_known_failure('sparql10/open-world', 'open-eq-08', "not analysed yet: literals of other datatypes compared").
-w3c_known_failure('sparql10/open-world', 'open-eq-10', "not analysed yet: literals of other datatypes compared").
-w3c_known_failure('sparql10/open-world', 'open-eq-11', "not analysed yet: literals of other datatypes compared").
-w3c_known_failure('sparql10/open-world', 'open-eq-12', "not analysed yet: plain and language-tagged literals compared").
 w3c_known_failure('sparql11/aggregates', 'COUNT: no GROUP BY inside of GRAPH', "not analysed yet: COUNT inside GRAPH").
 w3c_known_failure('sparql11/cast', 'xsd:string cast', "not analysed yet: xsd:string cast of an IRI").
 w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").

@@ -568,6 +568,8 @@ equal_class(lang(X, TX), lang(Y, TY), R) :-
     downcase_atom(TX, LX),
     downcase_atom(TY, LY),
     truth_of(( X == Y, LX == LY ), R).
+equal_class(lang(_, _), _, false) :- !.
+equal_class(_, lang(_, _), false) :- !.
 equal_class(iri(X), iri(Y), R) :- !, truth_of(X == Y, R).
 equal_class(iri(_), _, false) :- !.
 equal_class(_, iri(_), false) :- !.

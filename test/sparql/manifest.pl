@@ -205,7 +205,7 @@ test('op-subtract-vars','literals.ttl','op-subtract-vars.rq',rows([a,b,c,d],[[a=
 test('op-subtract-filter','literals.ttl','op-subtract-filter.rq',rows([x],[[x=d1],[x=i1],[x=z1]])).
 test('op-numeric-eq','literals.ttl','op-numeric-eq.rq',rows([x],[[x=i1]])).
 test('op-numeric-cmp','literals.ttl','op-numeric-cmp.rq',rows([x],[[x=d1],[x=f1],[x=i2]])).
-test('op-not-equal','literals.ttl','op-not-equal.rq',rows([x],[[x=k1],[x=r1],[x=s2],[x=s3]])).
+test('op-not-equal','literals.ttl','op-not-equal.rq',rows([x],[[x=k1],[x=l1],[x=l2],[x=r1],[x=s2],[x=s3]])).
 test('op-lang-eq','literals.ttl','op-lang-eq.rq',rows([x],[[x=l1]])).
 test('op-boolean','literals.ttl','op-boolean.rq',rows([x],[[x=b2]])).
 test('op-boolean-order','literals.ttl','op-boolean-order.rq',rows([x],[[x=b2]])).
