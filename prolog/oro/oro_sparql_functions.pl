@@ -1101,8 +1101,14 @@ made_bnode_binding(_-V) :-
 %   XSD casts (SPARQL 1.1 §17.5).
 
 cast(string, X, V) :-
-    function(str, [X], literal(Lex)),
+    (   X = literal(type(_, _)),
+        value_class(X, C),
+        canonical_string(C, Lex)
+    ->  true
+    ;   function(str, [X], literal(Lex))
+    ),
     string_term(xsd, Lex, V).
+
 cast(boolean, X, V) :-
     (   value_class(X, boolean(B))
     ->  true
@@ -1137,6 +1143,48 @@ cast(Kind, X, V) :-
     ),
     cast_number(Kind, N0, N),
     number_term(Kind, N, V).
+
+
+%   canonical_string(+Class, -Lex): the canonical lexical form XPath
+%   casts a number or boolean to xsd:string with: 1.0 is "1", "1E0"
+%   of a double "1", "0"^^xsd:boolean "false"; a double or float
+%   outside [1e-6, 1e6) keeps an exponent ("1.0E7").
+
+canonical_string(boolean(B), B).
+canonical_string(number(integer, N), Lex) :-
+    format(atom(Lex), '~d', [N]).
+canonical_string(number(decimal, N), Lex) :-
+    decimal_lexical(N, Lex0),
+    drop_point_zero(Lex0, Lex).
+canonical_string(number(Kind, N), Lex) :-
+    memberchk(Kind, [float, double]),
+    F is float(N),
+    (   F =:= F,
+        A is abs(F),
+        ( A =:= 0 ; A >= 1.0e-6, A < 1.0e6 )
+    ->  decimal_lexical(F, Lex0),
+        drop_point_zero(Lex0, Lex)
+    ;   F =:= F, F =\= inf, F =\= -inf
+    ->  format(atom(Sci), '~15e', [F]),
+        atomic_list_concat([Mantissa0, Exp0], e, Sci),
+        mantissa_digits(Mantissa0, Mantissa),
+        atom_number(Exp0, Exp),
+        format(atom(Lex), '~wE~d', [Mantissa, Exp])
+    ;   double_lexical(F, Lex)
+    ).
+
+mantissa_digits(M0, M) :-
+    (   atom_concat(M1, '0', M0),
+        \+ atom_concat(_, '.', M1)
+    ->  mantissa_digits(M1, M)
+    ;   M = M0
+    ).
+
+drop_point_zero(Lex0, Lex) :-
+    (   atom_concat(Lex1, '.0', Lex0)
+    ->  Lex = Lex1
+    ;   Lex = Lex0
+    ).
 
 cast_number(integer, N0, N) :-
     !,

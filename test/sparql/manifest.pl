@@ -185,6 +185,7 @@ test('fn-bnode-str-rows','literals.ttl','fn-bnode-str-rows.rq',rows([n],[[n=int(
 test('fn-cast-filter','literals.ttl','fn-cast-filter.rq',rows([x],[[x=b1],[x=b2],[x=d1],[x=i1],[x=i2],[x=z1],[x=f1],[x=e1]])).
 test('fn-cast-datetime','literals.ttl','fn-cast-datetime.rq',rows([a,b,c,d,e],[[a=typed("2002-10-10T17:00:00Z",xsd:dateTime),b=typed("2002-10-10T17:00:00.5+02:00",xsd:dateTime),d=typed("2020-01-02T10:00:00Z",xsd:dateTime)]])).
 test('fn-surrogate-pair','literals.ttl','fn-surrogate-pair.rq',rows([n,i],[[n=int(1),i="http://e/\u00e9"]])).
+test('fn-cast-string','literals.ttl','fn-cast-string.rq',rows([a,b,c,d,e,f,g],[[a=str("1"),b=str("1"),c=str("false"),d=str("1.0E7"),e=str("2.5"),f=str("7"),g="1.0"]])).
 test('fn-regex','literals.ttl','fn-regex.rq',rows([x],[[x=s2]])).
 test('fn-regex-flags','literals.ttl','fn-regex-flags.rq',rows([a,b,c,d],[[a=bool(true),b=bool(false),c=bool(true),d=bool(true)]])).
 test('fn-if-coalesce','literals.ttl','fn-if-coalesce.rq',rows([a,b,c],[[a="yes",c="c"]])).
