@@ -417,16 +417,25 @@ solve(subselect(Query, Cache), Ctx, In, Mu) :-
     sort(1, @<, Row, Mu),
     compatible(In, Mu).
 
+%   subselect_rows(+Query, +Cache, +Ctx, -Rows): the rows of a
+%   sub-select, computed once per active graph (GRAPH ?g { SELECT ... }
+%   has one table per named graph) when no outer binding is substituted.
+
 subselect_rows(Query, Cache, Ctx, Rows) :-
-    Ctx = ctx(_, Subst, _, _),
+    Ctx = ctx(ds(Source, _), Subst, _, _),
     (   Subst == [],
-        arg(1, Cache, rows(Rows0))
+        arg(1, Cache, rows(Tables)),
+        memberchk(Source-Rows0, Tables)
     ->  Rows = Rows0
     ;   Query = select(Proj, D, P, Mods),
         group_context(Ctx, none, Ctx1),
         select_rows(select(Proj, D, P, Mods), Ctx1, Rows),
         (   Subst == []
-        ->  nb_setarg(1, Cache, rows(Rows))
+        ->  (   arg(1, Cache, rows(Tables0))
+            ->  true
+            ;   Tables0 = []
+            ),
+            nb_setarg(1, Cache, rows([Source-Rows|Tables0]))
         ;   true
         )
     ).
