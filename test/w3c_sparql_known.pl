@@ -18,5 +18,4 @@ w3c_known_failure('sparql10/expr-builtin', 'str-1', "not analysed yet (probably 
 w3c_known_failure('sparql10/expr-builtin', 'str-2', "not analysed yet (probably rdf_db reading numeric literals by value)").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-1 -- graph', "a numeric constant in a pattern matches by value in rdf_db (\"01\"^^xsd:integer matches 1), not as an RDF term").
 w3c_known_failure('sparql10/expr-equals', 'Equality 1-2 -- graph', "as Equality 1-1 -- graph").
-w3c_known_failure('sparql11/property-path', '(pp16) Duplicate paths and cycles through foaf:knows*', "zero-length matches of p* with both ends unbound are the nodes the path touches, not every node of the graph").
 w3c_known_failure('sparql11/property-path', 'ZeroOrX property paths should only return terms in the graph and not also terms defined in the query', "not analysed yet: zero-length path with a constant end not in the graph").

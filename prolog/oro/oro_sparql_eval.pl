@@ -622,8 +622,9 @@ resource_or_var(X) :-
 
 %   path_holds(+Path, +Ctx, ?S, ?O): arbitrary-length paths have the
 %   distinct-node semantics of SPARQL 1.1 (each end once).  With both
-%   ends unbound, the zero-length matches of `*` and `?` are the nodes
-%   the path itself touches.
+%   ends unbound, the zero-length matches of `*` and `?` are every node
+%   (subject or object) of the active graph (SPARQL 1.1 §18.4,
+%   ZeroLengthPath).
 
 path_holds(link(P), Ctx, S, O) :-
     triple(Ctx, S, P, O).
@@ -665,7 +666,15 @@ closure_holds(P, How, Ctx, S, O) :-
     ;   nonvar(O)
     ->  reached(How, P, bwd, Ctx, O, Set),
         member(S, Set)
-    ;   findall(N, ( path_holds(P, Ctx, X, Y),
+    ;   How == one_or_more
+    ->  findall(N, ( path_holds(P, Ctx, X, Y),
+                     ( N = X ; N = Y )
+                   ), Nodes0),
+        sort(Nodes0, Nodes),
+        member(S, Nodes),
+        reached(How, P, fwd, Ctx, S, Set),
+        member(O, Set)
+    ;   findall(N, ( triple(Ctx, X, _, Y),
                      ( N = X ; N = Y )
                    ), Nodes0),
         sort(Nodes0, Nodes),

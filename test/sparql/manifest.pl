@@ -156,7 +156,7 @@ test('path-09','paths.ttl','path-09.rq',rows([z],[[z=a],[z=e]])).
 test('path-10','paths.ttl','path-10.rq',rows([z],[[z=c]])).
 test('path-11','paths.ttl','path-11.rq',rows([z],[[z=a]])).
 test('path-12','paths.ttl','path-12.rq',rows([z],[[z=a]])).
-test('path-13','paths.ttl','path-13.rq',rows([s,o],[[s=x,o=x],[s=x,o=y],[s=y,o=y]])).
+test('path-13','paths.ttl','path-13.rq',rows([s,o],[[s=a,o=a],[s=x,o=x],[s=x,o=y],[s=y,o=y]])).
 test('path-14','zoo.ttl','path-14.rq',rows([c],[[c='Animal'],[c=owl:'Thing'],[c='Bird']])).
 test('path-15','paths.ttl','path-15.rq',rows([z],[[z=b],[z=c]])).
 test('path-16','paths.ttl','path-16.rq',rows([z],[[z=b],[z=c],[z=d]])).
