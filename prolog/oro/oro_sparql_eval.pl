@@ -666,22 +666,25 @@ closure_holds(P, How, Ctx, S, O) :-
     ;   nonvar(O)
     ->  reached(How, P, bwd, Ctx, O, Set),
         member(S, Set)
-    ;   How == one_or_more
-    ->  findall(N, ( path_holds(P, Ctx, X, Y),
-                     ( N = X ; N = Y )
-                   ), Nodes0),
-        sort(Nodes0, Nodes),
-        member(S, Nodes),
-        reached(How, P, fwd, Ctx, S, Set),
-        member(O, Set)
-    ;   findall(N, ( triple(Ctx, X, _, Y),
-                     ( N = X ; N = Y )
-                   ), Nodes0),
-        sort(Nodes0, Nodes),
+    ;   start_nodes(How, P, Ctx, Nodes),
         member(S, Nodes),
         reached(How, P, fwd, Ctx, S, Set),
         member(O, Set)
     ).
+
+%   start_nodes(+How, +P, +Ctx, -Nodes): the nodes a path with both
+%   ends unbound starts from: those P links for p+, every node of the
+%   active graph when the path has a zero-length match.
+
+start_nodes(How, P, Ctx, Nodes) :-
+    (   How == one_or_more
+    ->  Goal = path_holds(P, Ctx, X, Y)
+    ;   Goal = triple(Ctx, X, _, Y)
+    ),
+    findall(N, ( call(Goal),
+                 ( N = X ; N = Y )
+               ), Nodes0),
+    sort(Nodes0, Nodes).
 
 reached(zero_or_one, P, Dir, Ctx, X, Set) :-
     findall(Y, path_step(Dir, P, Ctx, X, Y), Ys),
