@@ -243,6 +243,23 @@ test(graph_over_named_graphs, [true(Answer == ["oro:myself#longterm"-"http://kb.
     sparql_json(Body2, Dict2),
     Answer = [Pair, Dict2.results.bindings].
 
+%   A sub-select inside GRAPH ?g has one table per named graph (it was
+%   computed once, in the first graph, and reused for every other).
+
+test(subselect_per_named_graph, [true(Answer == ["1", true])]) :-
+    hp_request('/sparql', get([query="SELECT ?g ?n WHERE { GRAPH ?g { SELECT (COUNT(*) AS ?n) WHERE { ?x oro:grams ?w } } }"]),
+               'application/sparql-results+json', 200, _, Body),
+    sparql_json(Body, Dict),
+    findall(G-N, ( member(B, Dict.results.bindings),
+                   G = B.g.value, N = B.n.value ), Pairs),
+    memberchk("oro:myself#longterm"-N1, Pairs),
+    (   forall(member(G-N, Pairs), ( G == "oro:myself#longterm" ; N == "0" )),
+        Pairs = [_, _|_]
+    ->  Others = true
+    ;   Others = false
+    ),
+    Answer = [N1, Others].
+
 test(from_file_graph, [true(Answer == [false, true])]) :-
     testsuite_url(URL),
     format(string(Q1), "ASK FROM <~w> { oro:zork ?p ?o }", [URL]),

@@ -786,8 +786,20 @@ test(midnight_24, [true(B == true)]) :-
     sq_bool("\"2002-10-10T24:00:00Z\"^^xsd:dateTime = \"2002-10-11T00:00:00Z\"^^xsd:dateTime", B).
 test(datetime_order, [true(B == true)]) :-
     sq_bool("\"2002-10-10T12:00:00Z\"^^xsd:dateTime < \"2002-10-10T24:00:00Z\"^^xsd:dateTime", B).
-test(date_vs_datetime_is_error, [true(B == error)]) :-
+%   xsd:date and xsd:dateTime are different primitive types: their
+%   values are never equal (W3C open-world date-2 keeps a dateTime for
+%   != a date) and have no order.
+test(date_vs_datetime_not_equal, [true(B == false)]) :-
     sq_bool("\"2006-08-23\"^^xsd:date = \"2006-08-23T00:00:00Z\"^^xsd:dateTime", B).
+test(date_vs_datetime_order_is_error, [true(B == error)]) :-
+    sq_bool("\"2006-08-23\"^^xsd:date < \"2006-08-23T00:00:00Z\"^^xsd:dateTime", B).
+%   A value without time zone is ordered against a zoned one only when
+%   they are more than 14 hours apart (XSD).
+test(zoned_date_order, [true(Bs == [true, true, error, false])]) :-
+    maplist(sq_bool, ["\"2006-08-23Z\"^^xsd:date > \"2006-08-22\"^^xsd:date",
+                      "\"2006-08-23+00:00\"^^xsd:date > \"2006-08-22\"^^xsd:date",
+                      "\"2006-08-23Z\"^^xsd:date = \"2006-08-23\"^^xsd:date",
+                      "\"2001-01-01Z\"^^xsd:date = \"2006-08-23\"^^xsd:date"], Bs).
 test(date_vs_date, [true(B == true)]) :-
     sq_bool("\"2006-08-23\"^^xsd:date < \"2006-08-24\"^^xsd:date", B).
 
@@ -846,3 +858,30 @@ test(iri_default_namespace, [true(I == 'http://kb.openrobots.org#a')]) :-
     oro_sparql(myself, "SELECT (IRI(\"a\") AS ?i) WHERE {}", select(_, [[i-I]])).
 
 :- end_tests(sparql_iri_function).
+
+%   A simple literal in a pattern is an RDF term over the asserted
+%   triples: "x" matches "x" and "x"^^xsd:string (one term in RDF 1.1),
+%   never "x"@en nor "x"^^T (rdf_db's literal(x) matches all of them);
+%   +5 is the literal "+5"^^xsd:integer (INTEGER_POSITIVE keeps its sign).
+
+:- begin_tests(sparql_literal_terms, [setup(sq_forget_data), cleanup(sq_forget_data)]).
+
+test(simple_literal_constant, [true(Rows == [[s-a], [s-d]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s oro:label \"x\" }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows1),
+    msort(Rows1, Rows).
+test(typed_constant, [true(Rows == [[s-c]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s oro:label \"x\"^^oro:custom }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows).
+
+test(signed_number_constant, [true(Rows == [[s-e]])]) :-
+    sq_use_data('terms.ttl'),
+    oro_sparql(myself, "SELECT ?s WHERE { ?s ?p +5 }",
+               select([s], Rows0), [infer(false)]),
+    maplist([[s-IRI], [s-L]]>>rdf_global_id(oro:L, IRI), Rows0, Rows).
+
+:- end_tests(sparql_literal_terms).

@@ -417,16 +417,25 @@ solve(subselect(Query, Cache), Ctx, In, Mu) :-
     sort(1, @<, Row, Mu),
     compatible(In, Mu).
 
+%   subselect_rows(+Query, +Cache, +Ctx, -Rows): the rows of a
+%   sub-select, computed once per active graph (GRAPH ?g { SELECT ... }
+%   has one table per named graph) when no outer binding is substituted.
+
 subselect_rows(Query, Cache, Ctx, Rows) :-
-    Ctx = ctx(_, Subst, _, _),
+    Ctx = ctx(ds(Source, _), Subst, _, _),
     (   Subst == [],
-        arg(1, Cache, rows(Rows0))
+        arg(1, Cache, rows(Tables)),
+        memberchk(Source-Rows0, Tables)
     ->  Rows = Rows0
     ;   Query = select(Proj, D, P, Mods),
         group_context(Ctx, none, Ctx1),
         select_rows(select(Proj, D, P, Mods), Ctx1, Rows),
         (   Subst == []
-        ->  nb_setarg(1, Cache, rows(Rows))
+        ->  (   arg(1, Cache, rows(Tables0))
+            ->  true
+            ;   Tables0 = []
+            ),
+            nb_setarg(1, Cache, rows([Source-Rows|Tables0]))
         ;   true
         )
     ).
@@ -576,7 +585,10 @@ source_triple(Model, S, P, O) :-
 
 %   stored_object(+O, -Pattern, -Test): language tags are case
 %   insensitive (RDF 1.1): a language-tagged constant "x"@EN matches the
-%   stored "x"@en; rdf_db compares tags as they are written.
+%   stored "x"@en; rdf_db compares tags as they are written.  A simple
+%   literal "x" (the same term as "x"^^xsd:string, which rdf_db stores
+%   as "x") matches only itself: rdf_db's literal(x) would also match
+%   "x"@en and "x"^^T.
 
 stored_object(O, Pattern, Test) :-
     (   nonvar(O),
@@ -584,6 +596,11 @@ stored_object(O, Pattern, Test) :-
         atom(Lang)
     ->  Pattern = literal(lang(Stored, Lex)),
         Test = same_language(Lang, Stored)
+    ;   nonvar(O),
+        O = literal(Lex),
+        atom(Lex)
+    ->  Pattern = literal(exact(Lex), Stored),
+        Test = (Stored == Lex)
     ;   Pattern = O,
         Test = true
     ).
@@ -605,8 +622,9 @@ resource_or_var(X) :-
 
 %   path_holds(+Path, +Ctx, ?S, ?O): arbitrary-length paths have the
 %   distinct-node semantics of SPARQL 1.1 (each end once).  With both
-%   ends unbound, the zero-length matches of `*` and `?` are the nodes
-%   the path itself touches.
+%   ends unbound, the zero-length matches of `*` and `?` are every node
+%   (subject or object) of the active graph (SPARQL 1.1 §18.4,
+%   ZeroLengthPath).
 
 path_holds(link(P), Ctx, S, O) :-
     triple(Ctx, S, P, O).
@@ -648,14 +666,25 @@ closure_holds(P, How, Ctx, S, O) :-
     ;   nonvar(O)
     ->  reached(How, P, bwd, Ctx, O, Set),
         member(S, Set)
-    ;   findall(N, ( path_holds(P, Ctx, X, Y),
-                     ( N = X ; N = Y )
-                   ), Nodes0),
-        sort(Nodes0, Nodes),
+    ;   start_nodes(How, P, Ctx, Nodes),
         member(S, Nodes),
         reached(How, P, fwd, Ctx, S, Set),
         member(O, Set)
     ).
+
+%   start_nodes(+How, +P, +Ctx, -Nodes): the nodes a path with both
+%   ends unbound starts from: those P links for p+, every node of the
+%   active graph when the path has a zero-length match.
+
+start_nodes(How, P, Ctx, Nodes) :-
+    (   How == one_or_more
+    ->  Goal = path_holds(P, Ctx, X, Y)
+    ;   Goal = triple(Ctx, X, _, Y)
+    ),
+    findall(N, ( call(Goal),
+                 ( N = X ; N = Y )
+               ), Nodes0),
+    sort(Nodes0, Nodes).
 
 reached(zero_or_one, P, Dir, Ctx, X, Set) :-
     findall(Y, path_step(Dir, P, Ctx, X, Y), Ys),

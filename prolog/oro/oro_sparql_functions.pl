@@ -67,6 +67,7 @@ cast_type(xsd:decimal, decimal).
 cast_type(xsd:float, float).
 cast_type(xsd:double, double).
 cast_type(xsd:boolean, boolean).
+cast_type(xsd:dateTime, dateTime).
 
 type_literal(Type, Lex, literal(type(Type, Lex))).
 
@@ -87,7 +88,7 @@ kind_rank(double, 3).
 %   The effective boolean value of Expr in Mu is true.
 
 expr_true(E, Mu, Ctx) :-
-    eval_expr(E, Mu, Ctx, V),
+    once(eval_expr(E, Mu, Ctx, V)),
     ebv(V, true).
 
 %!  eval_expr(+Expr, +Mu, +Ctx, -Value) is semidet.
@@ -174,10 +175,15 @@ eval_expr(agg(Name, Distinct, Arg, Sep), _, Ctx, V) :-
     Ctx = ctx(M, S, Members, C),
     Members \== none,
     aggregate_value(Name, Distinct, Arg, Sep, Members, ctx(M, S, none, C), V).
+eval_expr(fn(bnode, [A]), Mu, Ctx, V) :-
+    !,
+    eval_expr(A, Mu, Ctx, VA),
+    simple_string(VA, Lex),
+    labelled_bnode(Mu, Lex, V).
 eval_expr(fn(Name, Args), Mu, Ctx, V) :-
     !,
     maplist(eval_arg(Mu, Ctx), Args, Vs),
-    function(Name, Vs, V).
+    once(function(Name, Vs, V)).
 eval_expr(E, Mu, Ctx, V) :-
     arithmetic(E, Mu, Ctx, V).
 
@@ -267,8 +273,10 @@ ebv_class(invalid(T, _), false) :-
 %!  value_class(+Term, -Class) is semidet.
 %
 %   Class is the value of the literal Term for comparisons:
-%   number(Kind, N), string(S, Lang), boolean(B), datetime(Type, T)
-%   (an xsd:dateTime and an xsd:date are not comparable), ...
+%   number(Kind, N), string(S, Lang), boolean(B), datetime(Type, T,
+%   Zoned) (T the time stamp, a value without time zone read as UTC,
+%   Zoned true or false; an xsd:dateTime and an xsd:date are not
+%   comparable), ...
 
 value_class(literal(V), C) :-
     !,
@@ -296,8 +304,8 @@ literal_class(type(T, Lex0), C) :-
         ;   C = invalid(T, Lex)
         )
     ;   date_type(T)
-    ->  (   date_stamp(Lex, Stamp)
-        ->  C = datetime(T, Stamp)
+    ->  (   date_value(T, Lex, Stamp, Zoned)
+        ->  C = datetime(T, Stamp, Zoned)
         ;   C = invalid(T, Lex)
         )
     ;   C = typed(T, Lex)
@@ -330,6 +338,86 @@ date_stamp(Lex, Stamp) :-
         Stamp is Stamp0 + 86400
     ;   catch(parse_time(Lex, iso_8601, Stamp), _, fail)
     ).
+
+%   xsd_date_time//0: the lexical space of xsd:dateTime,
+%   -?YYYY-MM-DDThh:mm:ss(.s+)?(Z|(+|-)hh:mm)?
+
+xsd_date_time -->
+    optional_minus,
+    digits(Y), { length(Y, NY), NY >= 4 },
+    "-", two_digits, "-", two_digits, "T",
+    two_digits, ":", two_digits, ":", two_digits,
+    optional_fraction,
+    optional_zone.
+
+optional_minus --> "-", !.
+optional_minus --> [].
+
+two_digits --> [A, B], { code_type(A, digit), code_type(B, digit) }.
+
+optional_fraction --> ".", !, digits([_|_]).
+optional_fraction --> [].
+
+optional_zone --> "Z", !.
+optional_zone --> [S], { S == 0'+ ; S == 0'- }, !,
+    two_digits, ":", two_digits.
+optional_zone --> [].
+
+%   date_value(+Type, +Lex, -Stamp, -Zoned): the value of an xsd:date
+%   (midnight starting the day, in its time zone if it has one) or
+%   xsd:dateTime.
+
+date_value(Type, Lex, Stamp, Zoned) :-
+    (   rdf_equal(Type, xsd:date)
+    ->  sub_atom(Lex, B, 1, _, '-'),
+        B > 0,
+        sub_atom(Lex, 0, B, _, Year),
+        Start is B + 6,
+        sub_atom(Lex, 0, Start, After, Day),
+        sub_atom(Lex, Start, After, 0, Zone),
+        atom_length(Year, YL), YL >= 4,
+        atomic_list_concat([Day, 'T00:00:00', Zone], DateTime)
+    ;   DateTime = Lex
+    ),
+    date_stamp(DateTime, Stamp),
+    (   time_zoned(DateTime)
+    ->  Zoned = true
+    ;   Zoned = false
+    ).
+
+time_zoned(Lex) :-
+    (   sub_atom(Lex, _, 1, 0, 'Z')
+    ->  true
+    ;   sub_atom(Lex, B, 6, 0, Zone),
+        B >= 19,
+        sub_atom(Zone, 0, 1, _, Sign),
+        memberchk(Sign, ['+', '-']),
+        sub_atom(Zone, 3, 1, _, ':')
+    ).
+
+%   datetime_order(+X, +ZX, +Y, +ZY, -Order): XSD's order of date and
+%   time values: a value without time zone is any time from 14 hours
+%   before to 14 hours after the same time in UTC, so it is ordered
+%   against a zoned value only when the whole range is on one side
+%   (fails otherwise: indeterminate).
+
+datetime_order(X, Z, Y, Z, O) :-
+    !,
+    number_order(X, Y, O).
+datetime_order(X, false, Y, true, O) :-
+    !,
+    Span = 50400,
+    (   X + Span < Y
+    ->  O = (<)
+    ;   X - Span > Y
+    ->  O = (>)
+    ).
+datetime_order(X, true, Y, false, O) :-
+    datetime_order(Y, false, X, true, O0),
+    inverse_order(O0, O).
+
+inverse_order(<, >).
+inverse_order(>, <).
 
 boolean_lexical(true, true).
 boolean_lexical(false, false).
@@ -470,12 +558,18 @@ equal_terms(A, B, R) :-
 equal_class(number(_, X), number(_, Y), R) :- !, truth_of(X =:= Y, R).
 equal_class(string(X, _), string(Y, _), R) :- !, truth_of(X == Y, R).
 equal_class(boolean(X), boolean(Y), R) :- !, truth_of(X == Y, R).
-equal_class(datetime(T, X), datetime(T, Y), R) :- !, truth_of(X =:= Y, R).
+equal_class(datetime(T, X, ZX), datetime(T, Y, ZY), R) :-
+    !,
+    datetime_order(X, ZX, Y, ZY, O),
+    truth_of(O == (=), R).
+equal_class(datetime(_, _, _), datetime(_, _, _), false) :- !.
 equal_class(lang(X, TX), lang(Y, TY), R) :-
     !,
     downcase_atom(TX, LX),
     downcase_atom(TY, LY),
     truth_of(( X == Y, LX == LY ), R).
+equal_class(lang(_, _), _, false) :- !.
+equal_class(_, lang(_, _), false) :- !.
 equal_class(iri(X), iri(Y), R) :- !, truth_of(X == Y, R).
 equal_class(iri(_), _, false) :- !.
 equal_class(_, iri(_), false) :- !.
@@ -502,7 +596,9 @@ truth_of(Goal, R) :-
 order_class(number(_, X), number(_, Y), O) :- !, number_order(X, Y, O).
 order_class(string(X, _), string(Y, _), O) :- !, compare(O, X, Y).
 order_class(boolean(X), boolean(Y), O) :- !, compare(O, X, Y).
-order_class(datetime(T, X), datetime(T, Y), O) :- !, number_order(X, Y, O).
+order_class(datetime(T, X, ZX), datetime(T, Y, ZY), O) :-
+    !,
+    datetime_order(X, ZX, Y, ZY, O).
 
 number_order(X, Y, O) :-
     (   X < Y
@@ -984,11 +1080,35 @@ percent_bytes([B|Bs]) -->
     Hex,
     percent_bytes(Bs).
 
+%   labelled_bnode(+Mu, +Lex, -BNode): BNODE(Lex) in the solution Mu:
+%   the same blank node for the same string in the same solution, a
+%   different one in any other solution (SPARQL 1.1 §17.4.2.9).  Its
+%   label is a digest of both, so it is new to the store; labels are
+%   scoped to one result set, where distinct solutions give distinct
+%   labels.  The solution is its bindings less those made by BNODE,
+%   so that two BNODE(?s) of one SELECT agree when their ?s do.
+
+labelled_bnode(Mu, Lex, BNode) :-
+    exclude(made_bnode_binding, Mu, Mu1),
+    msort(Mu1, Key),
+    variant_sha1(Key-Lex, Hash),
+    atom_concat('_:sparql-bnode-', Hash, BNode).
+
+made_bnode_binding(_-V) :-
+    atom(V),
+    sub_atom(V, 0, _, _, '_:sparql-bnode-').
+
 %   XSD casts (SPARQL 1.1 §17.5).
 
 cast(string, X, V) :-
-    function(str, [X], literal(Lex)),
+    (   X = literal(type(_, _)),
+        value_class(X, C),
+        canonical_string(C, Lex)
+    ->  true
+    ;   function(str, [X], literal(Lex))
+    ),
     string_term(xsd, Lex, V).
+
 cast(boolean, X, V) :-
     (   value_class(X, boolean(B))
     ->  true
@@ -1001,6 +1121,16 @@ cast(boolean, X, V) :-
         boolean_lexical(Lex, B)
     ),
     boolean_term(B, V).
+cast(dateTime, X, literal(type(T, Lex))) :-
+    rdf_equal(xsd:dateTime, T),
+    (   X = literal(type(T, Lex))
+    ->  true
+    ;   simple_string(X, Lex0),
+        normalize_space(atom(Lex), Lex0),
+        atom_codes(Lex, Codes),
+        phrase(xsd_date_time, Codes),
+        date_stamp(Lex, _)
+    ).
 cast(Kind, X, V) :-
     memberchk(Kind, [integer, decimal, float, double]),
     (   value_class(X, boolean(B))
@@ -1013,6 +1143,48 @@ cast(Kind, X, V) :-
     ),
     cast_number(Kind, N0, N),
     number_term(Kind, N, V).
+
+
+%   canonical_string(+Class, -Lex): the canonical lexical form XPath
+%   casts a number or boolean to xsd:string with: 1.0 is "1", "1E0"
+%   of a double "1", "0"^^xsd:boolean "false"; a double or float
+%   outside [1e-6, 1e6) keeps an exponent ("1.0E7").
+
+canonical_string(boolean(B), B).
+canonical_string(number(integer, N), Lex) :-
+    format(atom(Lex), '~d', [N]).
+canonical_string(number(decimal, N), Lex) :-
+    decimal_lexical(N, Lex0),
+    drop_point_zero(Lex0, Lex).
+canonical_string(number(Kind, N), Lex) :-
+    memberchk(Kind, [float, double]),
+    F is float(N),
+    (   F =:= F,
+        A is abs(F),
+        ( A =:= 0 ; A >= 1.0e-6, A < 1.0e6 )
+    ->  decimal_lexical(F, Lex0),
+        drop_point_zero(Lex0, Lex)
+    ;   F =:= F, F =\= inf, F =\= -inf
+    ->  format(atom(Sci), '~15e', [F]),
+        atomic_list_concat([Mantissa0, Exp0], e, Sci),
+        mantissa_digits(Mantissa0, Mantissa),
+        atom_number(Exp0, Exp),
+        format(atom(Lex), '~wE~d', [Mantissa, Exp])
+    ;   double_lexical(F, Lex)
+    ).
+
+mantissa_digits(M0, M) :-
+    (   atom_concat(M1, '0', M0),
+        \+ atom_concat(_, '.', M1)
+    ->  mantissa_digits(M1, M)
+    ;   M = M0
+    ).
+
+drop_point_zero(Lex0, Lex) :-
+    (   atom_concat(Lex1, '.0', Lex0)
+    ->  Lex = Lex1
+    ;   Lex = Lex0
+    ).
 
 cast_number(integer, N0, N) :-
     !,
@@ -1147,14 +1319,65 @@ regex_match(Text, Pattern0, Flags, R) :-
           ),
           _, fail).
 
+%   regex_replace(+Text, +Pattern, +With, +Flags, -Result) is semidet.
+%
+%   fn:replace: every match of Pattern in Text replaced by With, whose
+%   $N is the text of group N (empty when the group took no part in the
+%   match) and \$, \\ a dollar and a backslash.  The substitution is
+%   ours: re_replace/5 of SWI-Prolog 9.0.4 raises on a group that did
+%   not match.  Fails (an error) on a bad replacement or a pattern that
+%   matches the empty string, as XPath says.
+
 regex_replace(Text, Pattern0, With, Flags, Result) :-
     regex_options(Flags, Options, Quote),
     regex_pattern(Pattern0, Quote, Pattern),
     atom_string(Text, String),
-    atom_string(With, WithString),
-    catch(re_replace(Pattern/g, WithString, String, Result0, Options),
+    atom_codes(With, WithCodes),
+    phrase(replacement(Parts), WithCodes),
+    catch(re_foldl(replace_match(String, Parts), Pattern, String,
+                   0-Codes, End-Tail, [capture_type(range)|Options]),
           _, fail),
-    atom_string(Result, Result0).
+    string_length(String, Length),
+    Rest is Length - End,
+    sub_string(String, End, Rest, _, After),
+    string_codes(After, Tail),
+    atom_codes(Result, Codes).
+
+replace_match(String, Parts, Match, Start-Codes, End-Tail) :-
+    get_dict(0, Match, From-Len),
+    Len > 0,
+    Before is From - Start,
+    sub_string(String, Start, Before, _, Prefix),
+    string_codes(Prefix, PrefixCodes),
+    append(PrefixCodes, Codes1, Codes),
+    foldl(replacement_part(String, Match), Parts, Codes1, Tail),
+    End is From + Len.
+
+replacement_part(_, _, text(C), [C|T], T).
+replacement_part(String, Match, group(N), Codes, Tail) :-
+    (   get_dict(N, Match, From-Len)
+    ->  sub_string(String, From, Len, _, Group),
+        string_codes(Group, GroupCodes),
+        append(GroupCodes, Tail, Codes)
+    ;   Codes = Tail
+    ).
+
+replacement([Part|Parts]) -->
+    replacement_part(Part),
+    !,
+    replacement(Parts).
+replacement([]) --> [].
+
+replacement_part(text(0'$)) --> "\\$", !.
+replacement_part(text(0'\\)) --> "\\\\", !.
+replacement_part(group(N)) -->
+    "$",
+    !,
+    digits(Ds),
+    { Ds \== [], number_codes(N, Ds) }.
+replacement_part(text(C)) -->
+    [C],
+    { C \== 0'\\ }.
 
 :- else.
 

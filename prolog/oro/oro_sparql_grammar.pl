@@ -1190,7 +1190,7 @@ numeric_literal(T) -->
     (   tok(punct(-))
     ->  { Sign = '-' }
     ;   tok(punct(+))
-    ->  { Sign = '' }
+    ->  { Sign = '+' }
     ;   { Sign = '' }
     ),
     tok(num(Kind, Lex0)),
@@ -1579,5 +1579,5 @@ function_arity(now, 0, 0).
 function_arity(rand, 0, 0).
 function_arity(uuid, 0, 0).
 function_arity(struuid, 0, 0).
-function_arity(bnode, 0, 0).
+function_arity(bnode, 0, 1).
 

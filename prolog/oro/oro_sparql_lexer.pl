@@ -133,11 +133,7 @@ punct(P) -->
 
 iri_codes([C|Cs]) -->
     "\\",
-    (   "u"
-    ->  hex_digits(4, C)
-    ;   "U",
-        hex_digits(8, C)
-    ),
+    code_escape(C),
     !,
     iri_codes(Cs).
 iri_codes([C|Cs]) -->
@@ -231,8 +227,34 @@ escape(0'\f) --> "f", !.
 escape(0'") --> "\"", !.
 escape(0'\') --> "'", !.
 escape(0'\\) --> "\\", !.
-escape(C) --> "u", !, hex_digits(4, C).
-escape(C) --> "U", hex_digits(8, C).
+escape(C) --> code_escape(C).
+
+%   code_escape(-C)//: uXXXX or UXXXXXXXX after a backslash, a Unicode
+%   scalar value: a UTF-16 surrogate pair written as two \u escapes is
+%   one character, a lone surrogate is no character (an error).
+
+code_escape(C) -->
+    "u",
+    !,
+    hex_digits(4, C0),
+    surrogate_pair(C0, C).
+code_escape(C) -->
+    "U",
+    hex_digits(8, C),
+    { C =< 0x10FFFF,
+      \+ between(0xD800, 0xDFFF, C)
+    }.
+
+surrogate_pair(High, C) -->
+    { between(0xD800, 0xDBFF, High) },
+    !,
+    "\\u",
+    hex_digits(4, Low),
+    { between(0xDC00, 0xDFFF, Low),
+      C is 0x10000 + (High - 0xD800) * 0x400 + (Low - 0xDC00)
+    }.
+surrogate_pair(C, C) -->
+    { \+ between(0xDC00, 0xDFFF, C) }.
 
 hex_digits(N, C) -->
     hex_digits(N, 0, C).
