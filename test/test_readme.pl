@@ -372,8 +372,12 @@ readme_server(Argv, Dir, Env, Ports, Goal) :-
                        ]),
         ( readme_listening(Out, ports(none, none, none), Ports),
           Ports = ports(Oro, _, _),
-          assertion(integer(Oro)),
-          once(Goal)
+          (   integer(Oro)
+          ->  once(Goal)
+          ;   print_message(error, format("test_readme: swipl ~q did not listen",
+                                          [Argv])),
+              fail
+          )
         ),
         ( process_kill(Pid),
           process_wait(Pid, _),
@@ -611,7 +615,7 @@ readme_serve_methods(Ports, Methods) :-
 %   Dir.
 
 readme_config(Block, Dir, Name, Settings, Argv) :-
-    append([Head|Settings0], ["", Command], Block),
+    once(append([Head|Settings0], ["", Command], Block)),
     string_concat("% ", Name, Head),
     maplist(readme_config_line, Settings0, Settings),
     test_checkout_path('.', Checkout),
