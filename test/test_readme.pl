@@ -571,30 +571,19 @@ readme_serve_argv([swipl|Words0], Checkout, Argv) :-
     ;   append(Words1, Extra, Argv)
     ).
 
+%   readme_serve_word(+Checkout, +Word0, -Word): the server's script and
+%   the files of --ontology and --plugin are the checkout's, whatever
+%   the directory the command runs in; --port=6969 is a free port.
+
 readme_serve_word(Checkout, Word0, Word) :-
     (   Word0 == '--port=6969'
     ->  Word = '--port=0'
     ;   Word0 == 'server/oro_server.pl'
     ->  atom_concat(Checkout, '/server/oro_server.pl', Word)
-    ;   sub_atom(Word0, 0, _, _, '--'),
-        sub_atom(Word0, B, _, _, '='),
-        sub_atom(Word0, 0, B, _, Option),
-        memberchk(Option, ['--ontology', '--plugin']),
-        sub_atom(Word0, _, _, 0, '.pl')
-    ->  sub_atom(Word0, B, _, 0, Eq),
-        sub_atom(Eq, 1, _, 0, File),
-        atomic_list_concat([Option, '=', Checkout, '/', File], Word)
-    ;   sub_atom(Word0, 0, _, _, '--'),
-        sub_atom(Word0, B, _, _, '='),
-        sub_atom(Word0, 0, B, _, Option),
-        memberchk(Option, ['--ontology', '--plugin', '--config']),
-        sub_atom(Word0, _, 1, _, '/')
-    ->  sub_atom(Word0, B, _, 0, Eq),
-        sub_atom(Eq, 1, _, 0, File),
-        (   sub_atom(File, 0, _, _, '/')
-        ->  Word = Word0
-        ;   atomic_list_concat([Option, '=', Checkout, '/', File], Word)
-        )
+    ;   member(Option, ['--ontology=', '--plugin=']),
+        atom_concat(Option, File, Word0),
+        \+ sub_atom(File, 0, _, _, '/')
+    ->  atomic_list_concat([Option, Checkout, '/', File], Word)
     ;   Word = Word0
     ).
 
