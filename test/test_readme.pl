@@ -38,10 +38,12 @@
       the command must exit with status 0 and its output (carriage
       returns dropped) begin with the lines under it (`...` stops the
       comparison).
-    - serve [METHOD ...]: the block is a command that starts a server:
-      run (a `swipl -g ...` command with `-p library=CHECKOUT/prolog`,
-      standing for the installed pack, from a temporary directory), it
-      must print its listening lines, and `listSimpleMethods` must
+    - serve [METHOD ...]: the block is a command that starts a server,
+      run from a temporary directory (its script and its --ontology
+      and --plugin files taken from the checkout, the options kept in
+      their order; a `swipl -g ...` command gets
+      `-p library=CHECKOUT/prolog`, standing for the installed pack):
+      it must print its listening line, and `listSimpleMethods` must
       list each METHOD.
     - config: a settings file (named by its first line, `% FILE`), a
       blank line, then the command that uses it, run in a temporary
