@@ -30,7 +30,7 @@ class Server:
         if swipl is None:
             raise unittest.SkipTest("swipl is not installed")
         self.process = subprocess.Popen(
-            [swipl, SERVER, "--port=0"] + list(args),
+            [swipl, SERVER, "--port=0", "--http=0"] + list(args),
             stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT, text=True)
         self.port = None
