@@ -64,6 +64,15 @@
       started with `--plugin=FILE` as its first option, and METHOD
       CLASS must answer the number of instances getInstancesOf CLASS
       lists.
+    - nodes-start: commands that start servers in the background
+      (`CMD &`), run by the test of the `nodes` block that follows.
+    - nodes LINE ...: a shell script run by bash in the checkout after
+      the commands of the `nodes-start` block before it, its ports
+      (6380 for Redis, 7001 and 7002 for the nodes) rewritten to free
+      ones; the test waits (bounded) until both nodes listen and runs
+      the block's last command again (bounded) until its output holds
+      `cup1` (replication takes a moment): that output must be the
+      marker's LINEs.  Skipped with a notice without redis-server.
     - pack: each `?- Goal.` (a pack_install/2 of `file:///path/to/oro`)
       is run with the checkout for /path/to/oro and HOME and
       XDG_DATA_HOME in a temporary directory, as a user would; then
@@ -84,6 +93,7 @@
 :- use_module(library(socket)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
+:- use_module(library(aggregate)).
 :- use_module(library(pairs)).
 :- use_module(library(filesex)).
 :- use_module(library(http/json)).
@@ -548,6 +558,60 @@ readme_shell(Ports, command(Command0, Expected0), Mismatch) :-
     ).
 
                  /*******************************
+                 *        SEVERAL NODES         *
+                 *******************************/
+
+%   readme_nodes(+Servers, +Client, -Lines): run the commands of
+%   Servers (each `CMD &`), wait for the two nodes, run the script
+%   Client, its last command until it shows cup1; Lines is that
+%   command's output (the script's other output is discarded).  One
+%   bash script, whose EXIT and TERM traps stop the background
+%   processes, bounded by timeout(1).
+
+readme_nodes(Servers, Client, Lines) :-
+    maplist(readme_free_port, [Redis, A, B]),
+    Ports = ["6380"-Redis, "7001"-A, "7002"-B],
+    atomic_list_concat(Servers, '\n', ServersText0),
+    atomic_list_concat(Client, '\n', ClientText0),
+    foldl(readme_port, Ports, ServersText0, ServersText),
+    foldl(readme_port, Ports, ClientText0, ClientText),
+    split_string(ClientText, "\n", "", ClientLines),
+    append(Before, [Last], ClientLines),
+    atomic_list_concat(Before, '\n', BeforeText),
+    format(string(Script),
+           "exec 4>&1 >/dev/null 2>&1~n\c
+            trap 'kill $(jobs -p) 2>/dev/null' EXIT TERM~n~w~n\c
+            for i in $(seq 200); do \c
+              (exec 3<>/dev/tcp/127.0.0.1/~w) 2>/dev/null && \c
+              (exec 3<>/dev/tcp/127.0.0.1/~w) 2>/dev/null && break; \c
+              sleep 0.1; done~n\c
+            ~w~n\c
+            for i in $(seq 100); do out=$(~w); \c
+              case \"$out\" in *cup1*) break;; esac; sleep 0.1; done~n\c
+            printf '%s\\n' \"$out\" >&4~n",
+           [ServersText, A, B, BeforeText, Last]),
+    test_checkout_path('.', Checkout),
+    setup_call_cleanup(
+        process_create(path(timeout), ['90', bash, '-c', Script],
+                       [ cwd(Checkout), stdout(pipe(Out)), stderr(null),
+                         process(Pid)
+                       ]),
+        ( read_string(Out, _, Text),
+          process_wait(Pid, _)
+        ),
+        close(Out)),
+    split_string(Text, "\n", "\n", Lines0),
+    exclude(==(""), Lines0, Lines1),
+    maplist(atom_string, Lines, Lines1).
+
+%   readme_free_port(-Port): a port of 127.0.0.1 free now.
+
+readme_free_port(Port) :-
+    tcp_socket(Socket),
+    tcp_bind(Socket, '127.0.0.1':Port),
+    tcp_close_socket(Socket).
+
+                 /*******************************
                  *        SERVER COMMANDS       *
                  *******************************/
 
@@ -810,7 +874,7 @@ test(every_marker_is_known, Unknown == []) :-
             ( readme_example(Line, Kind, _, _),
               \+ memberchk(Kind, [ telnet, prolog, 'prolog-client', shell,
                                    serve, config, 'log-format', python,
-                                   plugin, pack
+                                   plugin, pack, 'nodes-start', nodes
                                  ])
             ), Unknown).
 
@@ -938,5 +1002,34 @@ test(example, [ forall(readme_example(Line, pack, _, Block)),
     readme_goals(Block, Goals),
     assertion(Goals \== []),
     readme_pack(Goals, Answer).
+
+test(example, [ forall(readme_example(Line, 'nodes-start', _, _)),
+                true(Line-Followed == Line-true)
+              ]) :-
+    (   readme_example(Next, nodes, _, _),
+        Next > Line,
+        aggregate_all(count,
+                      ( readme_code_block(Between, _),
+                        Between > Line,
+                        Between < Next
+                      ),
+                      1)                    % its own block only
+    ->  Followed = true
+    ;   Followed = false
+    ).
+
+test(example, [ forall(readme_example(Line, nodes, Expected, Block)),
+                true(Line-Lines == Line-Expected)
+              ]) :-
+    (   absolute_file_name(path('redis-server'), _,
+                           [access(execute), file_errors(fail)])
+    ->  once(( readme_example(Start, 'nodes-start', _, Servers),
+               Start < Line
+             )),
+        readme_nodes(Servers, Block, Lines)
+    ;   format(user_error, "~NREADME line ~w: no redis-server, skipped~n",
+               [Line]),
+        Lines = Expected
+    ).
 
 :- end_tests(readme).
