@@ -297,8 +297,8 @@ pengine_client(Answers) :-
 
 :- begin_tests(http_pengines, [setup(hp_start), cleanup(test_server_stop)]).
 
-test(read_only, [true(Answer == [Find, permission, sandbox, false])]) :-
-    pengine_client(answers(Find0, error(Change), error(Unsafe))),
+test(read_only, [true(Answer == [Find, permission, sandbox, false, true])]) :-
+    pengine_client(answers(Find0, error(Change), error(Unsafe), Check)),
     oro_find(myself, x, ["?x rdf:type Monkey"], Find1),
     maplist(atom_string, Find0, Strings),
     maplist(atom_string, Find1, Strings1),
@@ -314,11 +314,11 @@ test(read_only, [true(Answer == [Find, permission, sandbox, false])]) :-
     ;   U = Unsafe
     ),
     test_bool(oro_check(myself, ["intruder rdf:type Monkey"]), Added),
-    Answer = [Find, C, U, Added].
+    Answer = [Find, C, U, Added, Check].
 
 test(changes_allowed, [true(Answer == [done, true])]) :-
     test_with_setting(oro_http_pengines:changes, true,
-                      pengine_client(answers(_, Change, _))),
+                      pengine_client(answers(_, Change, _, _))),
     test_bool(oro_check(myself, ["intruder rdf:type Monkey"]), Added),
     Answer = [Change, Added].
 

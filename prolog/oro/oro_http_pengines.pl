@@ -130,6 +130,7 @@ change(Model) :-
 
 :- multifile sandbox:safe_primitive/1.
 
+sandbox:safe_primitive(oro_http_pengines:oro_check(_,_)).
 sandbox:safe_primitive(oro_http_pengines:oro_find(_,_,_,_)).
 sandbox:safe_primitive(oro_http_pengines:oro_find(_,_,_,_,_)).
 sandbox:safe_primitive(oro_http_pengines:oro_holds(_,_,_,_)).
