@@ -1,31 +1,4 @@
-:- module(oro_http_pengines,
-          [ oro_check/2,                % +Model, +Patterns
-            oro_find/4,                 % +Model, ?Var, +Patterns, -Values
-            oro_find/5,                 % +Model, +Var, +Patterns, +Filters, -Values
-            oro_holds/4,                % +Model, ?S, ?P, ?O
-            oro_type/3,                 % +Model, ?X, ?Class
-            oro_subclass/3,             % +Model, ?Sub, ?Super
-            oro_subproperty/3,          % +Model, ?Sub, ?Super
-            oro_class/2,                % +Model, ?Class
-            oro_individual/2,           % +Model, ?X
-            oro_superclasses/3,         % +Model, +Class, -Supers
-            oro_direct_superclasses/3,  % +Model, +Class, -Supers
-            oro_subclasses/3,           % +Model, +Class, -Subs
-            oro_direct_subclasses/3,    % +Model, +Class, -Subs
-            oro_instances/3,            % +Model, +Class, -Instances
-            oro_direct_instances/3,     % +Model, +Class, -Instances
-            oro_classes_of/3,           % +Model, +Individual, -Classes
-            oro_direct_classes_of/3,    % +Model, +Individual, -Classes
-            oro_exists/2,               % +Model, +Resource
-            oro_label/3,                % +Model, +Resource, -Label
-            oro_lookup/3,               % +Model, +Text, -Matches
-            oro_sparql/3,               % +Model, +Text, -Result
-            oro_agents/1,               % -Names
-            oro_add/2,                  % +Model, +Statements
-            oro_remove/2,               % +Model, +Statements
-            oro_update/2,               % +Model, +Statements
-            oro_clear/2                 % +Model, +Patterns
-          ]).
+:- module(oro_http_pengines, []).
 :- use_module(library(pengines)).
 :- use_module(library(sandbox)).
 :- use_module(library(settings)).
@@ -54,6 +27,39 @@ true (the server's option `http_changes(true)`, `--http-changes`).
 
 :- setting(changes, boolean, false,
            'Whether Pengines clients may change the store').
+
+%   remote_predicate(?PI): the predicates a remote goal may call (each
+%   defined below as the predicate of library(oro) of the same name).
+%   They are not exported, so that a module loading this one keeps
+%   library(oro)'s own: the application pengine_sandbox gets a clause
+%   of its own for each, calling this module's (SANDBOX below).
+
+remote_predicate(oro_check/2).
+remote_predicate(oro_find/4).
+remote_predicate(oro_find/5).
+remote_predicate(oro_holds/4).
+remote_predicate(oro_type/3).
+remote_predicate(oro_subclass/3).
+remote_predicate(oro_subproperty/3).
+remote_predicate(oro_class/2).
+remote_predicate(oro_individual/2).
+remote_predicate(oro_superclasses/3).
+remote_predicate(oro_direct_superclasses/3).
+remote_predicate(oro_subclasses/3).
+remote_predicate(oro_direct_subclasses/3).
+remote_predicate(oro_instances/3).
+remote_predicate(oro_direct_instances/3).
+remote_predicate(oro_classes_of/3).
+remote_predicate(oro_direct_classes_of/3).
+remote_predicate(oro_exists/2).
+remote_predicate(oro_label/3).
+remote_predicate(oro_lookup/3).
+remote_predicate(oro_sparql/3).
+remote_predicate(oro_agents/1).
+remote_predicate(oro_add/2).
+remote_predicate(oro_remove/2).
+remote_predicate(oro_update/2).
+remote_predicate(oro_clear/2).
 
 %!  oro_check(+Model, +Patterns) is semidet.
 %!  oro_find(+Model, ?Var, +Patterns, -Values) is det.
@@ -157,9 +163,15 @@ sandbox:safe_primitive(oro_http_pengines:oro_remove(_,_)).
 sandbox:safe_primitive(oro_http_pengines:oro_update(_,_)).
 sandbox:safe_primitive(oro_http_pengines:oro_clear(_,_)).
 
-:- initialization(export_to_sandbox).
+%   SANDBOX: for each remote predicate, a clause of pengine_sandbox
+%   calling this module's, made when this file is compiled (as the
+%   source of pengine_sandbox:Name/Arity).
 
-export_to_sandbox :-
-    module_property(oro_http_pengines, exports(PIs)),
-    forall(member(PI, PIs),
-           pengine_sandbox:import(oro_http_pengines:PI)).
+term_expansion(sandbox_clauses, Clauses) :-
+    findall(pengine_sandbox:(Head :- oro_http_pengines:Head),
+            ( remote_predicate(Name/Arity),
+              functor(Head, Name, Arity)
+            ),
+            Clauses).
+
+sandbox_clauses.
