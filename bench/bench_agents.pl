@@ -57,7 +57,7 @@
 
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_memory), [oro_memory_sync/0]).
-:- use_module(library(oro/oro_reason), [oro_compiled_schema/2]).
+:- use_module(library(oro/reason/oro_reason), [oro_compiled_schema/2]).
 :- use_module(library(oro/oro_store), [oro_model/1]).
 :- use_module(library(settings)).
 :- use_module(library(yall)).

@@ -19,7 +19,7 @@
    asserta(user:file_search_path(library, Lib)).
 
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_categorize)).
+:- use_module(library(oro/questions/oro_categorize)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).

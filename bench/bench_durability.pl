@@ -44,8 +44,8 @@
 :- use_module(library(process)).
 :- use_module(library(aggregate)).
 :- use_module(library(semweb/rdf_db)).
-:- use_module('../prolog/oro/oro_persist').
-:- use_module('../prolog/oro/oro_store', [oro_graph/3]).
+:- use_module(library(oro/oro_persist)).
+:- use_module(library(oro/oro_store), [oro_graph/3]).
 
 main :-
     current_prolog_flag(argv, Argv),

@@ -19,14 +19,14 @@
    atom_concat(Dir, '/../prolog', Lib),
    asserta(user:file_search_path(library, Lib)).
 
-:- use_module(library(oro/oro_parse)).
+:- use_module(library(oro/parse/oro_parse)).
 :- use_module(library(settings)).
 :- use_module(library(option)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(main), [argv_options/3]).
 :- use_module(bench_common).
-:- use_module('../server/oro_protocol').
+:- use_module(library(oro/server/oro_protocol)).
 
 :- initialization(main, main).
 

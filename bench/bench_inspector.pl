@@ -28,7 +28,7 @@
    asserta(user:file_search_path(oro_bench, Dir)).
 
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_http_feed)).
+:- use_module(library(oro/http/oro_http_feed)).
 :- use_module(library(option)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).

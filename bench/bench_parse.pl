@@ -16,14 +16,14 @@
    atom_concat(Dir, '/../prolog', Lib),
    asserta(user:file_search_path(library, Lib)).
 
-:- use_module(library(oro/oro_parse)).
+:- use_module(library(oro/parse/oro_parse)).
 :- use_module(library(oro/oro_names)).
 :- use_module(library(memfile)).
 :- use_module(library(option)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(main), [argv_options/3]).
-:- use_module('../server/oro_protocol').
+:- use_module(library(oro/server/oro_protocol)).
 :- use_module(bench_common).
 
 :- initialization(main, main).

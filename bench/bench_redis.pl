@@ -40,7 +40,7 @@
 :- use_module(library(error)).
 :- use_module(library(redis)).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_redis)).
+:- use_module(library(oro/replication/oro_redis)).
 :- use_module(bench_common).
 
 opt_type(seconds, seconds, number).

@@ -17,7 +17,7 @@
    asserta(user:file_search_path(oro_bench, Dir)).
 
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_sparql)).
+:- use_module(library(oro/sparql/oro_sparql)).
 :- use_module(library(oro/oro_store), [oro_asserted_count/2]).
 :- use_module(library(option)).
 :- use_module(library(pairs)).

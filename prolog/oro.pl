@@ -104,25 +104,36 @@
             op(110, xfx, @),
             op(650, xfx, ^^)
           ]).
+%   This library's modules import each other as library(oro/...): when
+%   prolog/ is not on the library path yet (a checkout used without
+%   installing the pack), put it there.
+
+:- multifile user:file_search_path/2.
+:- dynamic user:file_search_path/2.
+:- prolog_load_context(directory, Dir),
+   (   user:file_search_path(library, Dir)
+   ->  true
+   ;   asserta(user:file_search_path(library, Dir))
+   ).
 :- use_module(library(semweb/rdf_db)).
-:- use_module(oro/oro_names).
-:- use_module(oro/oro_knowledge).
-:- use_module(oro/oro_save, [oro_save/2]).
-:- use_module(oro/oro_parse).
-:- use_module(oro/oro_events).
-:- use_module(oro/oro_agents).
-:- use_module(oro/oro_memory).
-:- use_module(oro/oro_consistency).
-:- use_module(oro/oro_explain).
-:- use_module(oro/oro_categorize).
-:- use_module(oro/oro_sparql).
-:- use_module(oro/oro_reason).
-:- use_module(oro/oro_query).
-:- use_module(oro/oro_taxonomy).
-:- use_module(oro/oro_lookup).
-:- use_module(oro/oro_store, [oro_store_read/1, oro_store_rebuild/0]).
-:- use_module(oro/oro_show).
-:- use_module(oro/oro_errors, []).
+:- use_module(library(oro/oro_names)).
+:- use_module(library(oro/oro_knowledge)).
+:- use_module(library(oro/oro_save), [oro_save/2]).
+:- use_module(library(oro/parse/oro_parse)).
+:- use_module(library(oro/events/oro_events)).
+:- use_module(library(oro/oro_agents)).
+:- use_module(library(oro/oro_memory)).
+:- use_module(library(oro/questions/oro_consistency)).
+:- use_module(library(oro/questions/oro_explain)).
+:- use_module(library(oro/questions/oro_categorize)).
+:- use_module(library(oro/sparql/oro_sparql)).
+:- use_module(library(oro/reason/oro_reason)).
+:- use_module(library(oro/oro_query)).
+:- use_module(library(oro/questions/oro_taxonomy)).
+:- use_module(library(oro/questions/oro_lookup)).
+:- use_module(library(oro/oro_store), [oro_store_read/1, oro_store_rebuild/0]).
+:- use_module(library(oro/questions/oro_show)).
+:- use_module(library(oro/oro_errors), []).
 
 /** <module> oro: a knowledge server for cognitive robots
 

@@ -10,6 +10,17 @@
             oro_server_main/1,          % +Argv
             oro_server_arguments/1      % -Argv
           ]).
+%   This library's modules import each other as library(oro/...): when
+%   prolog/ is not on the library path yet (a checkout used without
+%   installing the pack), put it there.
+
+:- multifile user:file_search_path/2.
+:- dynamic user:file_search_path/2.
+:- prolog_load_context(directory, Dir),
+   (   user:file_search_path(library, Dir)
+   ->  true
+   ;   asserta(user:file_search_path(library, Dir))
+   ).
 :- use_module(library(socket)).
 :- use_module(library(main), [argv_options/3]).
 :- use_module(library(option)).
@@ -19,19 +30,19 @@
 :- use_module(library(aggregate)).
 :- use_module(library(apply), [include/3]).
 :- use_module(library(lists), [delete/3, append/3]).
-:- use_module(oro).
-:- use_module('../server/oro_protocol').
-:- use_module('../server/oro_methods').
-:- use_module('../server/oro_methods_sparql').
-:- use_module('../server/oro_methods_categorization').
-:- use_module('../server/oro_methods_explain').
-:- use_module('../server/oro_plugins').
-:- use_module('../server/oro_kbapi').
-:- use_module('../server/oro_log').
-:- use_module('../server/oro_cli').
-:- use_module(oro/oro_save, [oro_save_cancel/0]).
-:- use_module(oro/oro_http).
-:- use_module(oro/oro_redis, [oro_redis_options/1, oro_redis_stop/0]).
+:- use_module(library(oro)).
+:- use_module(library(oro/server/oro_protocol)).
+:- use_module(library(oro/server/oro_methods)).
+:- use_module(library(oro/server/oro_methods_sparql)).
+:- use_module(library(oro/server/oro_methods_categorization)).
+:- use_module(library(oro/server/oro_methods_explain)).
+:- use_module(library(oro/server/oro_plugins)).
+:- use_module(library(oro/kbapi/oro_kbapi)).
+:- use_module(library(oro/server/oro_log)).
+:- use_module(library(oro/server/oro_cli)).
+:- use_module(library(oro/oro_save), [oro_save_cancel/0]).
+:- use_module(library(oro/http/oro_http)).
+:- use_module(library(oro/replication/oro_redis), [oro_redis_options/1, oro_redis_stop/0]).
 
 /** <module> The ORO socket server
 

@@ -1,5 +1,12 @@
 :- module(oro_server_script, []).
-:- reexport('../prolog/oro_server').
+:- prolog_load_context(directory, Dir),
+   file_directory_name(Dir, Home),
+   directory_file_path(Home, prolog, Lib),
+   (   user:file_search_path(library, Lib)
+   ->  true
+   ;   asserta(user:file_search_path(library, Lib))
+   ).
+:- reexport(library(oro_server)).
 :- use_module(library(lists), [member/2]).
 
 /** <module> The command that starts the ORO socket server

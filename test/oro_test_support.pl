@@ -55,9 +55,9 @@
 :- use_module(library(http/json)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(settings)).
-:- use_module('../prolog/oro').
+:- use_module(library(oro)).
 :- use_module('../server/oro_server').
-:- use_module('../server/oro_kbapi', [oro_kbapi_connections/2]).
+:- use_module(library(oro/kbapi/oro_kbapi), [oro_kbapi_connections/2]).
 
 /** <module> Helpers shared by the test files
 

@@ -17,8 +17,8 @@
 :- use_module(library(readutil)).
 :- use_module(library(dcg/basics)).
 :- use_module(library(pcre)).
-:- use_module('../prolog/oro/oro_sparql', [oro_sparql_graph/2]).
-:- use_module('../prolog/oro/oro_store', [oro_load_ontology/1]).
+:- use_module(library(oro/sparql/oro_sparql), [oro_sparql_graph/2]).
+:- use_module(library(oro/oro_store), [oro_load_ontology/1]).
 :- use_module(oro_test_support, [test_checkout_path/2]).
 
 /** <module> The W3C SPARQL test suites, run through the endpoint

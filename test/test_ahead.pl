@@ -5,9 +5,9 @@
 :- use_module(library(debug)).
 :- use_module(library(aggregate)).
 :- use_module('../server/oro_server').
-:- use_module('../server/oro_methods').
-:- use_module('../prolog/oro').
-:- use_module('../prolog/oro/oro_parse').
+:- use_module(library(oro/server/oro_methods)).
+:- use_module(library(oro)).
+:- use_module(library(oro/parse/oro_parse)).
 
 /*  Requests answered ahead (server/oro_server.pl, REQUESTS AHEAD): a
     client that sends its requests back to back has the next one

@@ -1,7 +1,7 @@
 :- use_module(library(plunit)).
 :- use_module(oro_test_support).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_categorize)).
+:- use_module(library(oro/questions/oro_categorize)).
 :- use_module(library(oro/oro_names)).
 :- use_module(library(oro/oro_store)).
 :- use_module(library(semweb/rdf_db)).

@@ -37,7 +37,7 @@
 :- use_module(library(debug)).
 :- use_module(library(oro/oro_memory)).
 :- use_module(library(oro/oro_store)).
-:- use_module(library(oro/oro_parse)).
+:- use_module(library(oro/parse/oro_parse)).
 
 %   Stores: the test ontology, or the fixture of conflicts.
 

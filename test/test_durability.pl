@@ -3,7 +3,7 @@
 :- use_module(oro_test_client).
 :- use_module('../bench/bench_common', [bench_pin_to_cpu/1, bench_cpus/1, bench_set_cpus/1]).
 :- use_module(library(oro)).
-:- use_module('../prolog/oro/oro_reason',
+:- use_module(library(oro/reason/oro_reason),
               [oro_compiled_schema/2, oro_schema_superclass/3]).
 
 /*  Tests for durability (issue #8): the database directory of
@@ -47,8 +47,8 @@
 :- use_module(library(aggregate)).
 :- use_module(library(pairs)).
 :- use_module(library(socket)).
-:- use_module('../prolog/oro/oro_persist').
-:- use_module('../prolog/oro/oro_store',
+:- use_module(library(oro/oro_persist)).
+:- use_module(library(oro/oro_store),
               [oro_shared_graph/2, oro_store_attach/1, oro_store_detach/0]).
 
 %   durability_dir(-Dir): a fresh directory name (not created).

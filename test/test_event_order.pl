@@ -9,10 +9,10 @@
 :- use_module(oro_test_support).
 :- use_module(oro_test_client).
 :- use_module('../server/oro_server').
-:- use_module('../prolog/oro').
+:- use_module(library(oro)).
 
 /*  Where a connection's events are written among its replies (README,
-    "Clients"; server/oro_methods.pl, CONNECTION EVENTS), what
+    "Clients"; prolog/oro/server/oro_methods.pl, CONNECTION EVENTS), what
     clearEvents removes, and the minimum reply latency for unpatched
     liboro builds (server/oro_server.pl, MINIMUM REPLY LATENCY).
 

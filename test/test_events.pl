@@ -6,7 +6,7 @@
 :- use_module(library(pairs)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_reason),
+:- use_module(library(oro/reason/oro_reason),
               [oro_compiled_schema/2, oro_shared_schema/2]).
 :- use_module(library(oro/oro_store),
               [oro_store_write/2, oro_store_assert/3, oro_store_retract/2,

@@ -2,8 +2,8 @@
 :- use_module(oro_test_support).
 :- use_module(library(oro)).
 
-/*  Tests for explanations (prolog/oro/oro_explain.pl and the `explain`
-    method of server/oro_methods_explain.pl): the facts and axioms an
+/*  Tests for explanations (prolog/oro/questions/oro_explain.pl and the `explain`
+    method of prolog/oro/server/oro_methods_explain.pl): the facts and axioms an
     entailed statement rests on, for each kind of inference; statements
     that do not hold; the minimal sets of facts in conflict of an
     inconsistent model; the reply format over the socket and its errors.

@@ -20,7 +20,7 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_save)).
-:- use_module(library(oro/oro_parse)).
+:- use_module(library(oro/parse/oro_parse)).
 
 
                  /*******************************

@@ -1,4 +1,4 @@
-/*  Tests of the HTTP side (prolog/oro/oro_http.pl): the SPARQL 1.1
+/*  Tests of the HTTP side (prolog/oro/http/oro_http.pl): the SPARQL 1.1
     Protocol endpoint at /sparql, by real HTTP requests on a server of
     an ephemeral loopback port, in the ways SPARQL clients send them:
     rdflib's SPARQLWrapper (GET, or POST of a form, Accept naming one
@@ -17,7 +17,7 @@
 :- use_module(library(apply)).
 :- use_module(library(uri)).
 :- use_module(library(semweb/rdf_db)).
-:- use_module('../prolog/oro').
+:- use_module(library(oro)).
 :- use_module('../server/oro_server').
 
 %   hp_start: the unit's server, with its HTTP side on a free port, on

@@ -1,4 +1,4 @@
-/*  Tests of the web inspector (prolog/oro/oro_http_inspector.pl and
+/*  Tests of the web inspector (prolog/oro/http/oro_http_inspector.pl and
     oro_http_feed.pl): its JSON API and pages by real HTTP requests, its
     live feed by a real websocket, and every page in a real browser
     (Debian's chromium, headless, driven over DevTools: see
@@ -17,9 +17,9 @@
 :- use_module(library(apply)).
 :- use_module(library(uri)).
 :- use_module(library(settings)).
-:- use_module('../prolog/oro').
-:- use_module('../prolog/oro/oro_http_inspector').
-:- use_module('../prolog/oro/oro_http_feed').
+:- use_module(library(oro)).
+:- use_module(library(oro/http/oro_http_inspector)).
+:- use_module(library(oro/http/oro_http_feed)).
 :- use_module('../server/oro_server').
 
 %   in_start: the unit's server, HTTP side on a free port, test

@@ -7,10 +7,10 @@
 :- use_module(kb_test_client).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_memory), [oro_memory_sync/0]).
-:- use_module('../server/oro_kbapi_events', [kb_events_sync/0]).
+:- use_module(library(oro/kbapi/oro_kbapi_events), [kb_events_sync/0]).
 
 /*  The KB-API dialect (knowledge_core, minimalkb, pykb) over a real
-    socket: server/oro_kbapi.pl and its methods.
+    socket: prolog/oro/kbapi/oro_kbapi.pl and its methods.
 
     The scenarios are those knowledge_core's socket test suite
     (testing/test.py, test_reasoner.py) describes, written from its

@@ -16,7 +16,7 @@
 :- use_module(library(settings)).
 :- use_module(library(oro)).
 :- use_module(library(oro/oro_store)).
-:- use_module('../server/oro_log').
+:- use_module(library(oro/server/oro_log)).
 
 :- dynamic
     ops_message/1.                      % oro(Message) printed

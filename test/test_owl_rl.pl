@@ -24,7 +24,7 @@
     Run: cd /work/main && swipl -g run_tests -t halt test/test_owl_rl.pl
 */
 
-:- use_module(library(oro/oro_reason)).
+:- use_module(library(oro/reason/oro_reason)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
 :- use_module(library(lists)).

@@ -125,7 +125,8 @@ test(ships_library_server_ontology_examples, true(Missing == [])) :-
     findall(F,
             ( member(F, [ 'pack.pl', 'README.md', 'prolog/oro.pl',
                           'prolog/oro_server.pl', 'prolog/oro/oro_store.pl',
-                          'server/oro_server.pl', 'server/oro_protocol.pl',
+                          'server/oro_server.pl', 'prolog/oro/server/oro_protocol.pl',
+                          'prolog/oro/http/web/inspector.js',
                           'ontologies/commonsense.ttl',
                           'examples/plugins/count_instances.pl'
                         ]),

@@ -7,7 +7,7 @@
 :- use_module(library(plunit)).
 :- use_module(oro_test_support).
 :- use_module(library(semweb/rdf_db)).
-:- use_module(library(oro/oro_parse)).
+:- use_module(library(oro/parse/oro_parse)).
 
 %   obj(+ObjectText, -Object): parse `s p ObjectText`, return the object.
 
@@ -1001,14 +1001,14 @@ general_collection(Text, Elements) :-
                  *  FAST PATHS AGREE (PROTOCOL) *
                  *******************************/
 
-/*  The same for the fast paths of server/oro_protocol.pl: a block of
+/*  The same for the fast paths of prolog/oro/server/oro_protocol.pl: a block of
     bytes without `\r` cut with split_string/4, a whole short line or a
     bare `#end#` decided at once, a list of plain strings encoded in one
     piece.  Each must give what the general code gives.
 */
 
 :- use_module(library(memfile)).
-:- use_module('../server/oro_protocol').
+:- use_module(library(oro/server/oro_protocol)).
 
 :- begin_tests(protocol_fast_paths).
 

@@ -8,11 +8,11 @@
 :- use_module(library(process)).
 :- use_module(library(filesex)).
 :- use_module(library(readutil)).
-:- use_module('../server/oro_plugins').
-:- use_module('../prolog/oro/oro_persist', [oro_persist_directory/1]).
+:- use_module(library(oro/server/oro_plugins)).
+:- use_module(library(oro/oro_persist), [oro_persist_directory/1]).
 :- use_module(library(oro), [oro_close/0]).
 
-/*  Tests of plugins (server/oro_plugins.pl), over real sockets on
+/*  Tests of plugins (prolog/oro/server/oro_plugins.pl), over real sockets on
     127.0.0.1: loading with plugin(File) options of oro_server_start/2,
     listing in listMethods, listSimpleMethods, methods and help,
     calling (parameters, context, transactions), a method as one store

@@ -1,4 +1,4 @@
-/*  Tests of the wire layer (server/oro_protocol.pl): value encoding,
+/*  Tests of the wire layer (prolog/oro/server/oro_protocol.pl): value encoding,
     writers, and request framing over real sockets on 127.0.0.1.
 
     Run: cd /work/main && swipl -g run_tests -t halt test/test_protocol_framing.pl
@@ -10,7 +10,7 @@
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(error)).
-:- use_module('../server/oro_protocol').
+:- use_module(library(oro/server/oro_protocol)).
 
 
                  /*******************************

@@ -530,7 +530,7 @@ test(term_number_pattern, [ setup(reasoning_testsuite),
                  *      PINNED SCHEMA TABLES    *
                  *******************************/
 
-:- use_module(library(oro/oro_reason),
+:- use_module(library(oro/reason/oro_reason),
               [ oro_with_shared_schema/3,
                 oro_shared_schema/2,
                 oro_schema_superclass/3

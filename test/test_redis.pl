@@ -397,7 +397,7 @@ world_changes(Redis, N) :-
 */
 
 :- use_module(library(oro)).
-:- use_module('../prolog/oro/oro_redis').
+:- use_module(library(oro/replication/oro_redis)).
 
 
 :- begin_tests(redis_buffer, [condition(redis_available)]).

@@ -4,7 +4,7 @@
 :- use_module(library(apply)).
 :- use_module(library(random)).
 :- use_module(library(memfile)).
-:- use_module('../server/oro_protocol').
+:- use_module(library(oro/server/oro_protocol)).
 :- use_module(oro_client_parsers).
 :- use_module(oro_test_support).
 

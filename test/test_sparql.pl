@@ -7,10 +7,10 @@
 :- use_module(library(http/json)).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro)).
-:- use_module(library(oro/oro_sparql)).
+:- use_module(library(oro/sparql/oro_sparql)).
 
-/*  Tests of oro's SPARQL engine (prolog/oro/oro_sparql_engine.pl) and of the
-    query, find and sparql methods (server/oro_methods_sparql.pl):
+/*  Tests of oro's SPARQL engine (prolog/oro/sparql/oro_sparql_engine.pl) and of the
+    query, find and sparql methods (prolog/oro/server/oro_methods_sparql.pl):
 
       - the conformance manifest test/sparql/manifest.pl (data, queries,
         expected results, malformed queries), one unit per concern;

@@ -9,13 +9,13 @@
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(debug)).
-:- use_module(oro_names).
-:- use_module(oro_store).
-:- use_module(oro_reason).
-:- use_module(oro_events).
-:- use_module(oro_knowledge).
-:- use_module(oro_parse).
-:- use_module(oro_consistency).
+:- use_module(library(oro/oro_names)).
+:- use_module(library(oro/oro_store)).
+:- use_module(library(oro/reason/oro_reason)).
+:- use_module(library(oro/events/oro_events)).
+:- use_module(library(oro/oro_knowledge)).
+:- use_module(library(oro/parse/oro_parse)).
+:- use_module(library(oro/questions/oro_consistency)).
 
 /** <module> Agent models: what other agents believe
 

@@ -2,7 +2,7 @@
           [ oro_error_response/3        % +Error, -ExceptionName, -Message
           ]).
 :- use_module(library(semweb/rdf_db)).
-:- use_module(oro_names).
+:- use_module(library(oro/oro_names)).
 
 /** <module> ORO exception names and messages
 

@@ -18,14 +18,14 @@
 :- use_module(library(lists)).
 :- use_module(library(option)).
 :- use_module(library(settings)).
-:- use_module(oro_names).
-:- use_module(oro_parse).
-:- use_module(oro_store).
-:- use_module(oro_reason).
-:- use_module(oro_query).
-:- use_module(oro_events).
-:- use_module(oro_memory).
-:- use_module(oro_save).
+:- use_module(library(oro/oro_names)).
+:- use_module(library(oro/parse/oro_parse)).
+:- use_module(library(oro/oro_store)).
+:- use_module(library(oro/reason/oro_reason)).
+:- use_module(library(oro/oro_query)).
+:- use_module(library(oro/events/oro_events)).
+:- use_module(library(oro/oro_memory)).
+:- use_module(library(oro/oro_save)).
 :- autoload(oro_agents, [oro_agents_start/0]).  % it builds on this module
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
@@ -54,9 +54,10 @@ anything changes.
 
 :- multifile user:file_search_path/2.
 :- dynamic user:file_search_path/2.
-:- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/../../ontologies', Ontologies),
-   asserta(user:file_search_path(oro_ontologies, Ontologies)).
+:- (   user:file_search_path(oro_ontologies, oro_home(ontologies))
+   ->  true
+   ;   asserta(user:file_search_path(oro_ontologies, oro_home(ontologies)))
+   ).
 
 :- predicate_options(oro_init/1, 1,
                      [ commonsense(boolean),

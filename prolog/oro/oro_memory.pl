@@ -15,8 +15,8 @@
 :- use_module(library(pairs)).
 :- use_module(library(settings)).
 :- use_module(library(debug)).
-:- use_module(oro_store).
-:- use_module(oro_persist).
+:- use_module(library(oro/oro_store)).
+:- use_module(library(oro/oro_persist)).
 :- use_module(library(rbtrees)).
 
 /** <module> Memory profiles: facts that fade

@@ -11,9 +11,9 @@
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(error)).
-:- use_module(oro_reason).
-:- use_module(oro_store, [oro_resolve_model/2]).
-:- use_module(oro_names, [oro_resource/2, oro_object/2]).
+:- use_module(library(oro/reason/oro_reason)).
+:- use_module(library(oro/oro_store), [oro_resolve_model/2]).
+:- use_module(library(oro/oro_names), [oro_resource/2, oro_object/2]).
 
 /** <module> Query: conjunctive patterns over the inference closure
 

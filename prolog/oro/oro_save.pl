@@ -16,8 +16,8 @@
 :- use_module(library(apply)).
 :- use_module(library(debug)).
 :- use_module(library(settings)).
-:- use_module(oro_store).
-:- use_module(oro_persist, [oro_persist_directory/1]).
+:- use_module(library(oro/oro_store)).
+:- use_module(library(oro/oro_persist), [oro_persist_directory/1]).
 
 /** <module> Saving a model to a file
 
@@ -81,11 +81,19 @@ save while they show that writes go on.
     saving/1,                       % Thread
     installation_dir/1.             % Directory
 
-%   installation(-Dir): the directory holding prolog/oro.pl.
+%   installation(-Dir): the directory holding prolog/oro.pl, also the
+%   file search path oro_home (its pack.pl, ontologies/).
 
+:- multifile user:file_search_path/2.
+:- dynamic user:file_search_path/2.
 :- prolog_load_context(directory, Dir),
-   atom_concat(Dir, '/../..', Installation),
-   assertz(installation_dir(Installation)).
+   file_directory_name(Dir, Prolog),
+   file_directory_name(Prolog, Installation),
+   assertz(installation_dir(Installation)),
+   (   user:file_search_path(oro_home, Installation)
+   ->  true
+   ;   asserta(user:file_search_path(oro_home, Installation))
+   ).
 
 %!  oro_save(+Model, +File) is det.
 %

@@ -46,9 +46,9 @@
 :- use_module(library(option)).
 :- use_module(library(aggregate)).
 :- use_module(library(uri), [uri_file_name/2]).
-:- use_module(oro_persist).
-:- use_module(oro_messages).
-:- use_module(oro_names, [oro_local_name/2]).
+:- use_module(library(oro/oro_persist)).
+:- use_module(library(oro/oro_messages)).
+:- use_module(library(oro/oro_names), [oro_local_name/2]).
 
 :- meta_predicate
     oro_store_write(+, 0),
