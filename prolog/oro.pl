@@ -118,6 +118,7 @@
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(oro/oro_names)).
 :- use_module(library(oro/oro_knowledge)).
+:- use_module(library(oro/oro_setup)).
 :- use_module(library(oro/oro_save), [oro_save/2]).
 :- use_module(library(oro/parse/oro_parse)).
 :- use_module(library(oro/events/oro_events)).

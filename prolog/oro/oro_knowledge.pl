@@ -1,8 +1,5 @@
 :- module(oro_knowledge,
-          [ oro_init/1,                 % +Options
-            oro_reset/0,
-            oro_close/0,
-            oro_add/2,                  % +Model, +Statements
+          [ oro_add/2,                  % +Model, +Statements
             oro_add/3,                  % +Model, +Statements, +Profile
             oro_remove/2,               % +Model, +Statements
             oro_clear/2,                % +Model, +Patterns
@@ -10,7 +7,8 @@
             oro_update/3,               % +Model, +Statements, +Profile
             oro_check/2,                % +Model, +Patterns
             oro_find/4,                 % +Model, ?Var, +Patterns, -Values
-            oro_robot_id/1              % -Id
+            oro_robot_id/1,             % -Id
+            oro_create_robot_model/0
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(error)).
@@ -26,7 +24,6 @@
 :- use_module(library(oro/events/oro_events)).
 :- use_module(library(oro/oro_memory)).
 :- use_module(library(oro/oro_save)).
-:- autoload(oro_agents, [oro_agents_start/0]).  % it builds on this module
 
 /** <module> Knowledge operations: add, remove, clear, update, check, find
 
@@ -39,7 +36,7 @@ rdf(S, P, O) whose names may be short (`fork1`), prefixed
 numbers or strings (typed literals) or rdf_db literal terms, and whose
 variables are Prolog variables.
 
-    ?- oro_init([]),
+    ?- oro_init([]),                % library(oro/oro_setup)
        oro_add(myself, ["fork1 rdf:type Fork", "fork1 isOn kitchen_table"]),
        oro_find(myself, o, ["?o isAt kitchen_table"], L).
     L = ['http://kb.openrobots.org#fork1'].
@@ -52,108 +49,12 @@ anything changes.
 :- setting(robot_id, atom, '',
            'Id of the robot: a synonym of myself (empty: none)').
 
-:- multifile user:file_search_path/2.
-:- dynamic user:file_search_path/2.
-:- (   user:file_search_path(oro_ontologies, oro_home(ontologies))
-   ->  true
-   ;   asserta(user:file_search_path(oro_ontologies, oro_home(ontologies)))
-   ).
-
-:- predicate_options(oro_init/1, 1,
-                     [ commonsense(boolean),
-                       ontologies(list(atom)),
-                       time_base(positive_integer),
-                       robot_id(atom),
-                       save_dir(atom),
-                       db(atom),
-                       silent(boolean)
-                     ]).
-
-%!  oro_init(+Options) is det.
+%!  oro_create_robot_model is det.
 %
-%   Start from an empty store: load the ontology layer and create the
-%   robot model.  Options:
-%
-%     - commonsense(+Bool): load oro's common-sense ontology
-%       (default `true`);
-%     - ontologies(+Files): more ontology files (RDF/XML, Turtle or
-%       N-Triples), loaded in order;
-%     - robot_id(+Id): a synonym of `myself`;
-%     - time_base(+MS): length of one memory time unit (default 1000);
-%     - save_dir(+Dir): where oro_save/2 may write (default '': a
-%       directory of the user's, see oro_save);
-%     - db(+Dir): journal the models in Dir and restore what it holds
-%       (see oro_persist): every change reported done survives a
-%       crash.  Without it (the default) nothing is kept on disk;
-%     - silent(+Bool): if `false`, report the progress of each ontology
-%       load and its summary (see oro_load_ontology/2; default `true`).
+%   Create the robot's model, `myself` (alias `default` and the robot
+%   id), with the robot's own facts.
 
-oro_init(Options) :-
-    must_be(list, Options),
-    option(commonsense(CommonSense), Options, true),
-    option(ontologies(Files), Options, []),
-    option(robot_id(RobotId), Options, ''),
-    option(save_dir(SaveDir), Options, ''),
-    option(time_base(TimeBase), Options, 1000),
-    option(db(Db), Options, ''),
-    option(silent(Silent), Options, true),
-    must_be(boolean, Silent),
-    must_be(positive_integer, TimeBase),
-    must_be(atom, Db),
-    must_be(boolean, CommonSense),
-    must_be(list(atom), Files),
-    must_be(atom, RobotId),
-    must_be(atom, SaveDir),
-    (   catch(thread_property(oro_watcher, status(running)), _, fail)
-    ->  oro_events_sync                     % no snapshot left in flight
-    ;   true
-    ),
-    set_setting(robot_id, RobotId),
-    set_setting(oro_save:save_dir, SaveDir),
-    set_setting(oro_memory:time_base, TimeBase),
-    oro_memory_reset,
-    oro_store_detach,                       % the reset must not wipe it
-    oro_store_reset,
-    (   CommonSense == true
-    ->  absolute_file_name(oro_ontologies('commonsense.ttl'), CS,
-                           [access(read)]),
-        oro_load_ontology(CS, [silent(Silent)])
-    ;   true
-    ),
-    forall(member(File, Files),
-           oro_load_ontology(File, [silent(Silent)])),
-    (   Db == ''
-    ->  true
-    ;   oro_store_attach(Db)
-    ),
-    oro_events_start,
-    oro_events_reset,
-    create_robot_model,
-    oro_memory_restore,
-    oro_agents_start.
-
-%!  oro_close is det.
-%
-%   Close the database directory given to oro_init/1 (if any): wait for
-%   the change in progress, flush and close the journals.  Later
-%   changes are no longer kept on disk.  Called on a clean shutdown.
-
-oro_close :-
-    oro_store_detach.
-
-%!  oro_reset is det.
-%
-%   Forget every model, agent, event watcher and fact asserted since
-%   oro_init/1; the ontology layer stays as loaded.
-
-oro_reset :-
-    oro_events_reset,
-    oro_memory_reset,
-    oro_wipe_models,
-    create_robot_model,
-    oro_agents_start.
-
-create_robot_model :-
+oro_create_robot_model :-
     oro_create_model(myself),
     oro_add_model_alias(default, myself),
     oro_robot_id(RobotId),
