@@ -364,7 +364,6 @@ term_rank(literal(_), 3) :- !.
 term_rank(X, 1) :- rdf_is_bnode(X), !.
 term_rank(_, 2).
 
-
 		 /*******************************
 		 *          SOLUTIONS           *
 		 *******************************/
