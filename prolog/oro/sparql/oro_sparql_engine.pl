@@ -57,10 +57,13 @@ xsd:double, xsd:float, xsd:boolean).  Not supported (a clear parse
 error): SERVICE, updates and the date, hash and random functions.
 
 The modules of the engine, one per seam: oro_sparql_lexer (tokens),
-oro_sparql_grammar (the DCG, text to algebra), oro_sparql_algebra
-(annotation and the planner of basic graph patterns), oro_sparql_eval
-(the evaluator, datasets, CONSTRUCT and DESCRIBE), oro_sparql_functions
-(expressions, functions, aggregates), and one per result format:
+oro_sparql_grammar (the DCG, text to algebra: queries and graph
+patterns, over oro_sparql_syntax, oro_sparql_triples and
+oro_sparql_expressions), oro_sparql_algebra (annotation and the
+planner of basic graph patterns), oro_sparql_eval (the evaluator,
+datasets, CONSTRUCT and DESCRIBE), oro_sparql_functions (expressions,
+functions, aggregates), oro_sparql_terms (term values and their
+order, which both of the last two use), and one per result format:
 oro_sparql_json, oro_sparql_xml, oro_sparql_csv, oro_sparql_tsv,
 oro_sparql_turtle, oro_sparql_ntriples.
 

@@ -1,8 +1,6 @@
 :- module(oro_sparql_eval,
           [ run_query/3,                % +Dataset, +Query, -Result
-            eval/4,                     % +Pattern, +Ctx, +Mu0, -Mu
-            lookup/4,                   % +Name, +Mu, +Ctx, -Value
-            term_order/3                % +A, +B, -Order
+            eval/4                      % +Pattern, +Ctx, +Mu0, -Mu
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(lists)).
@@ -14,7 +12,8 @@
 :- use_module(library(oro/oro_store), [oro_asserted/4]).
 :- use_module(library(solution_sequences), [distinct/2]).
 :- use_module(library(oro/sparql/oro_sparql_algebra), [annotate_query/2, plan_goals/5, memo/4]).
-:- use_module(library(oro/sparql/oro_sparql_functions), [eval_expr/4, expr_true/3, order_class/3, value_class/2]).
+:- use_module(library(oro/sparql/oro_sparql_functions), [eval_expr/4, expr_true/3]).
+:- use_module(library(oro/sparql/oro_sparql_terms), [term_order/3, lookup/4]).
 
 /** <module> The SPARQL evaluator
 
@@ -319,30 +318,6 @@ flip_order(<, >).
 flip_order(>, <).
 flip_order(=, =).
 
-%!  term_order(+A, +B, -Order) is det.
-%
-%   Order is the ORDER BY order of the RDF terms A and B: unbound <
-%   blank nodes < IRIs < literals; literals by value when comparable.
-
-term_order(A, B, Order) :-
-    term_rank(A, RA),
-    term_rank(B, RB),
-    (   RA =\= RB
-    ->  compare(Order, RA, RB)
-    ;   RA =:= 3,
-        value_class(A, CA),
-        value_class(B, CB),
-        order_class(CA, CB, O0),
-        O0 \== (=)
-    ->  Order = O0
-    ;   compare(Order, A, B)
-    ).
-
-term_rank('$unbound', 0) :- !.
-term_rank(literal(_), 3) :- !.
-term_rank(X, 1) :- rdf_is_bnode(X), !.
-term_rank(_, 2).
-
 		 /*******************************
 		 *      PATTERN EVALUATION      *
 		 *******************************/
@@ -355,6 +330,12 @@ eval(p(Certain, Op), Ctx, Mu0, Mu) :-
     restrict(Mu0, Certain, In),
     solve(Op, Ctx, In, Mu1),
     merge_solutions(Mu0, Mu1, Mu).
+
+%   EXISTS in an expression (oro_sparql_functions) evaluates its
+%   pattern here.
+
+oro_sparql_functions:pattern_exists(P, Ctx) :-
+    eval(P, Ctx, [], _).
 
 %   solve(+Op, +Ctx, +In, -Mu): Mu is a solution of the pattern Op
 %   compatible with In, whose variables Op is certain to bind.
@@ -485,18 +466,6 @@ put_binding(N, V, Mu0, Mu) :-
     ->  V0 == V,
         Mu = Mu0
     ;   merge_solutions(Mu0, [N-V], Mu)
-    ).
-
-%!  lookup(+Name, +Mu, +Ctx, -Value) is semidet.
-%
-%   Value is the value of the variable Name in the solution Mu or in
-%   the substitution of Ctx (EXISTS).
-
-lookup(N, Mu, ctx(_, Subst, _, _), V) :-
-    (   memberchk(N-V0, Mu)
-    ->  V = V0
-    ;   memberchk(N-V0, Subst)
-    ->  V = V0
     ).
 
 		 /*******************************

@@ -3,7 +3,7 @@
           ]).
 :- use_module(library(semweb/rdf_db)).
 :- use_module(library(apply)).
-:- use_module(library(oro/sparql/oro_sparql_functions), [lexical_atom/2]).
+:- use_module(library(oro/sparql/oro_sparql_terms), [lexical_atom/2]).
 
 /** <module> SPARQL Query Results XML Format
 
