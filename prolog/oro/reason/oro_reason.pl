@@ -153,11 +153,13 @@ This module holds the public predicates that read the inference
 closure, and reexports those of its parts, which others should not
 load themselves:
 
-  | module            | owns                                                    |
-  |-------------------|---------------------------------------------------------|
-  | oro_reason_tables | the schema closure tables, their compilation from the schema (hierarchies, ways, class expressions, entries) and their readers |
-  | oro_reason_schema | the cache of tables per model and schema generation, pinned readers, the schema-table API |
-  | oro_reason_holds  | instance reasoning: oro_holds/4 and its variants, types, individuals, literal matching |
+  - oro_reason_tables owns the schema closure tables: their
+    compilation (hierarchies, ways, domains and ranges, class
+    expressions, entries) and the small readers the parts share.
+  - oro_reason_schema owns the cache of tables per model and schema
+    generation and the pinned readers; the schema-table predicates.
+  - oro_reason_holds derives instance triples and types: oro_holds/4
+    and its variants, individuals, literal matching.
 */
 
 :- rdf_meta
