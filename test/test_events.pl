@@ -1577,9 +1577,9 @@ test(reset_destroys_callback_subscribers,
                     ->  Ended = ended
                     ;   Ended = running
                     ),
-                    aggregate_all(count, oro_events:callback_subscriber(_, _),
+                    aggregate_all(count, oro_events_delivery:callback_subscriber(_, _),
                                   NCallbacks),
-                    aggregate_all(count, oro_events:subscriber(_, _, _, callback),
+                    aggregate_all(count, oro_events_delivery:subscriber(_, _, _, callback),
                                   NSubscribers),
                     oro_unsubscribe(Sub),           % nothing: destroyed
                     oro_add(myself, ["chicken has teeth", "coco rdf:type Monkey"]),
@@ -1628,9 +1628,9 @@ test(overflow_tells_the_planner,
                         ->  Present = present
                         ;   Present = absent
                         ),
-                        aggregate_all(count, oro_events:callback_subscriber(_, _),
+                        aggregate_all(count, oro_events_delivery:callback_subscriber(_, _),
                                       NCallbacks),
-                        aggregate_all(count, oro_events:subscriber(_, _, _, callback),
+                        aggregate_all(count, oro_events_delivery:subscriber(_, _, _, callback),
                                       NSubscribers)
                       )),
         message_queue_destroy(Gate)),
@@ -2194,7 +2194,7 @@ ev_inc_set_watch(classes, Type, Var, Patterns) :-
 %   The watchers of the set `classes`: on rdf:type, only watchers whose
 %   triggers are all classes (a type with its subject a variable and
 %   its class given), so that the writers decide for each type triple
-%   whether to send it (oro_events:type_filter/3).
+%   whether to send it (oro_events_monitor:type_filter/3).
 
 ev_cls_watch(new_instance, x, ["?x rdf:type Cup"]).
 ev_cls_watch(new_instance, x, ["?x rdf:type Person"]).
@@ -2522,7 +2522,7 @@ test(index_against_reference_seed_14) :-
 
 :- end_tests(events_incremental).
 
-%   The writers' filter of type triples (oro_events:type_filter/3): a
+%   The writers' filter of type triples (oro_events_monitor:type_filter/3): a
 %   type triple is sent to the watcher thread only if its class is under
 %   a class some watcher is anchored by, when every watcher on rdf:type
 %   is anchored by classes.
@@ -2538,7 +2538,7 @@ ev_cls_followed(Followed) :-
     oro_events_sync,
     once(oro_subclass(myself, oro:'Cup', _)),
     rdf_equal(rdf:type, Type),
-    oro_events:pair_followed(myself, Type, Followed).
+    oro_events_monitor:pair_followed(myself, Type, Followed).
 
 ev_cls_register(Subscriber, Patterns) :-
     oro_register_event(myself, new_instance, on_true, x, Patterns,
@@ -2567,7 +2567,7 @@ test(type_triple_sent_by_its_class,
           findall(F, ( member(Sign-Class, [add-'Mug', add-'Place',
                                            update-'Place', del-'Obj']),
                        rdf_global_id(oro:Class, C),
-                       oro_events:triple_followed(classes(Key), myself, Sign,
+                       oro_events_monitor:triple_followed(classes(Key), myself, Sign,
                                                   C, F)
                      ), Sent)
         ),
@@ -2592,7 +2592,7 @@ test(filter_back_after_schema_change) :-
     oro_events_sync,
     oro_add(myself, ["cup1 rdf:type Cup"]),       % asks for the schema
     rdf_equal(rdf:type, Type),
-    test_wait_until(oro_events:pair_followed(myself, Type, classes(_)), 10).
+    test_wait_until(oro_events_monitor:pair_followed(myself, Type, classes(_)), 10).
 
 test(random_changes_against_reference,
      [ forall(member(Seed, [21, 22, 23]))
@@ -2701,14 +2701,14 @@ test(delta_of_followed_predicates_only,
           oro_graph(myself, mask, Mask),
           setup_call_cleanup(
               nb_setval(oro_events_in_commit, true),
-              ( oro_events:note(Long, C1, HasColor, literal(red), add),
-                oro_events:note(Long, C1, IsOn, T1, add),
-                oro_events:note(Long, C1, HasColor, literal(blue), add),
-                oro_events:note(Mask, C1, HasColor, literal(red), add)
+              ( oro_events_monitor:note(Long, C1, HasColor, literal(red), add),
+                oro_events_monitor:note(Long, C1, IsOn, T1, add),
+                oro_events_monitor:note(Long, C1, HasColor, literal(blue), add),
+                oro_events_monitor:note(Mask, C1, HasColor, literal(red), add)
               ),
               nb_setval(oro_events_in_commit, false)),
-          oro_events:take_touched(Touched, _, _),
-          oro_events:take_delta(Delta)
+          oro_events_monitor:take_touched(Touched, _, _),
+          oro_events_monitor:take_delta(Delta)
         )).
 %   What touch/5 works out for a pair holds for one transaction only:
 %   one that is rolled back leaves nothing noted for the next (rdf_db
@@ -2728,8 +2728,8 @@ test(rolled_back_change_notes_nothing,
                                                 longterm),
                                fail
                              )),
-          oro_events:take_touched(Touched, _, _),
-          oro_events:take_delta(Delta)
+          oro_events_monitor:take_touched(Touched, _, _),
+          oro_events_monitor:take_delta(Delta)
         )).
 test(same_as_table_only_with_same_individuals,
      [ true(Result == before(false, [])-after(true))
@@ -2739,7 +2739,7 @@ test(same_as_table_only_with_same_individuals,
     rdf_global_id(oro:isOn, IsOn),
     rdf_global_id(oro:t1, T1),
     Delta = [d(myself, add, C1, IsOn, T1)],
-    oro_events:model_delta(myself, Delta, _, _, Same),
+    oro_events_eval:model_delta(myself, Delta, _, _, Same),
     assoc_to_list(Same, Pairs0),
     (   oro_reason:oro_has_same_individuals(myself)
     ->  Has0 = true
@@ -2902,7 +2902,7 @@ ev_watcher_tables_size(Size) :-
                                    watcher_trigger(_, _, _, _, _),
                                    watcher_dep(_, _, _)
                                  ]),
-                    predicate_property(oro_events:Head, size(S))
+                    predicate_property(oro_events_registry:Head, size(S))
                   ),
                   Size).
 
@@ -2918,7 +2918,7 @@ ev_watcher_count(N) :-
 %   the counter agrees with the clauses.
 
 ev_watcher_clauses(N) :-
-    aggregate_all(count, oro_events:watcher(_, _, _, _, _), N).
+    aggregate_all(count, oro_events_registry:watcher(_, _, _, _, _), N).
 
 ev_counted(Base, N) :-
     ev_watcher_count(Flag),
