@@ -5,7 +5,6 @@
             chunk_chars/1,              % -N
             nesting_error/1             % +Max
           ]).
-:- use_module(library(error)).
 :- use_module(library(apply)).
 :- use_module(library(settings)).
 
@@ -137,10 +136,10 @@ text(Text) :-
     ;   atom(Text)
     ).
 
-%!  nesting_error(+Max:positive_integer) is erroneous.
+%!  nesting_error(+Max:positive_integer).
 %
 %   Raise the error of brackets or braces nested deeper than Max (the
-%   `max_nesting` setting).
+%   `max_nesting` setting); it never succeeds.
 %
 %   @error resource_error(oro_nesting(Max)), always.
 

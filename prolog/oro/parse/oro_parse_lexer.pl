@@ -244,11 +244,12 @@ plain_text(Text) :-
 %!  local_specials(-Chars:string) is det.
 %!  quote_specials(-Chars:string) is det.
 %
-%   plain_specials(-Chars): `[]{}"'\` and the codes 1-31, as a string.
-%   local_specials/1: those and `:#<^@`.  quote_specials/1: those of
-%   plain_specials/1 but the quotes.  (All three computed at compile
-%   time.  NUL cannot be in such a set: split_string/4 reads its
-%   separators up to the first NUL.)
+%   Chars are the characters the statement fast paths must not meet,
+%   as a string: for local_specials/1 those of plain_specials(-Chars),
+%   `[]{}"'\` and the codes 1-31, and `:#<^@`; for quote_specials/1
+%   those of plain_specials/1 but the quotes.  (All three computed at
+%   compile time.  NUL cannot be in such a set: split_string/4 reads
+%   its separators up to the first NUL.)
 
 term_expansion(plain_specials(generated), plain_specials(Specials)) :-
     plain_special_codes(Codes),
