@@ -7,8 +7,8 @@
 
     Times are thread CPU time, the best of Samples runs of many
     iterations, so that other jobs on the machine disturb them little.
-    The general paths are internal predicates of oro_parse and
-    oro_protocol, called module-qualified; they give the same results
+    The general paths are internal predicates of the oro_parse_* modules
+    and of oro_protocol, called module-qualified; they give the same results
     (test/test_parse.pl checks it).
 */
 
@@ -42,8 +42,8 @@ main :-
     statements(Statements),
     forall(member(Kind-Text, Statements),
            ( format(atom(Name), 'statement, ~w', [Kind]),
-             row(Name, 5000, oro_parse:parse_statement(Text, _),
-                 oro_parse:general_statement(Text, _))
+             row(Name, 5000, oro_parse_statement:parse_statement(Text, _),
+                 oro_parse_statement:general_statement(Text, _))
            )),
     batch(100, Batch),
     set_text(Batch, SetText),
@@ -62,7 +62,7 @@ main :-
         oro_statements(Batch, _, _), -, 100),
     row('clean value', 20000,
         oro_clean_value(" kitchen_table ", _),
-        oro_parse:general_clean_value(" kitchen_table ", _)),
+        oro_parse_lexer:general_clean_value(" kitchen_table ", _)),
     row('name, plain', 20000, oro_name_iri("furniture1", _), -),
     row('name, prefixed', 20000, oro_name_iri("rdf:type", _), -),
     row('name, <IRI>', 20000, oro_name_iri("<http://x.org/a#b>", _), -),
@@ -154,8 +154,8 @@ quoted("'", Statements, Elements) :-
 %   the general way, code by code: what the fast paths stand for.
 
 code_by_code_elements(Inner) :-
-    oro_parse:general_tokenize(Inner, 0',, Tokens),
-    maplist(oro_parse:general_clean_value, Tokens, _).
+    oro_parse_lexer:general_tokenize(Inner, 0',, Tokens),
+    maplist(oro_parse_lexer:general_clean_value, Tokens, _).
 
 answers(N, Answers) :-
     numlist(1, N, Is),

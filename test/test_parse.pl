@@ -598,11 +598,11 @@ test(plain_tokens, all(T == ["a", "?x", "a\\\"b", "'q'", "\"it's\"",
                              "'\"'", "\"\"", "\"\\\\\""])) :-
     member(T, ["a", "?x", "a\\\"b", "'q'", "\"it's\"", "'\"'", "\"\"",
                "\"\\\\\""]),
-    oro_parse:quotes_closed(T).
+    oro_parse_statement:quotes_closed(T).
 test(open_tokens, all(T == ["\"", "'", "x\"", "\"a\\\"", "john's", "'a\"",
                             "\"a'\"'"])) :-
     member(T, ["\"", "'", "x\"", "\"a\\\"", "john's", "'a\"", "\"a'\"'"]),
-    \+ oro_parse:quotes_closed(T).
+    \+ oro_parse_statement:quotes_closed(T).
 
 :- end_tests(closed_quotes).
 
@@ -708,11 +708,11 @@ test(statement_corpus, Bad == []) :-
 test(statement_corpus_size, true(N > 3000)) :-
     aggregate_all(count, statement_corpus(_), N).
 test(statement_fast_path_taken, true) :-
-    oro_parse:local_statement("obj1 isOn table", _),
-    oro_parse:plain_statement_tokens("obj1 rdf:type Cup", _, _, _),
-    \+ oro_parse:local_statement("obj1 rdf:type Cup", _),
-    \+ oro_parse:plain_statement_tokens("obj1 p \"a\"", _, _, _),
-    \+ oro_parse:plain_statement_tokens(" obj1 p o", _, _, _).
+    oro_parse_statement:local_statement("obj1 isOn table", _),
+    oro_parse_statement:plain_statement_tokens("obj1 rdf:type Cup", _, _, _),
+    \+ oro_parse_statement:local_statement("obj1 rdf:type Cup", _),
+    \+ oro_parse_statement:plain_statement_tokens("obj1 p \"a\"", _, _, _),
+    \+ oro_parse_statement:plain_statement_tokens(" obj1 p o", _, _, _).
 test(random_statements, Bad == []) :-
     statement_alphabet(Alphabet),
     random_corpus(Alphabet, 14, 3000, Texts),
@@ -730,7 +730,7 @@ test(random_plain_statements_hit_fast_paths, true(Enough == true)) :-
     aggregate_all(count,
                   ( member(Text, Texts),
                     \+ local(Text),
-                    oro_parse:plain_statement_tokens(Text, _, _, _)
+                    oro_parse_statement:plain_statement_tokens(Text, _, _, _)
                   ),
                   Plain),
     (   Local >= 5,
@@ -745,25 +745,25 @@ test(random_literal_statements_hit_fast_path, true(Fast >= 300)) :-
     literal_corpus(3000, Texts),
     aggregate_all(count,
                   ( member(Text, Texts),
-                    catch(oro_parse:literal_statement(Text, _), error(_, _), true)
+                    catch(oro_parse_statement:literal_statement(Text, _), error(_, _), true)
                   ),
                   Fast).
 test(literal_fast_path_taken, true) :-
-    oro_parse:literal_statement("furniture20 rdfs:label \"table 20\"", _),
-    oro_parse:literal_statement("?x rdfs:label \"it's 2 m^2 @home\"", _),
-    oro_parse:literal_statement("a p \"\"", _),
-    \+ oro_parse:literal_statement("a p \"x\"@en", _),
-    \+ oro_parse:literal_statement("a p \"x\"^^xsd:string", _),
-    \+ oro_parse:literal_statement("a p \"say \\\"hi\\\"\"", _),
-    \+ oro_parse:literal_statement("a p \"a [b]\"", _),
-    \+ oro_parse:literal_statement("a p \"a\tb\"", _),
-    \+ oro_parse:literal_statement("a  p \"x\"", _),
-    \+ oro_parse:literal_statement("a p  \"x\"", _),
-    \+ oro_parse:literal_statement(" a p \"x\"", _),
-    \+ oro_parse:literal_statement("a p \"x\" ", _).
+    oro_parse_statement:literal_statement("furniture20 rdfs:label \"table 20\"", _),
+    oro_parse_statement:literal_statement("?x rdfs:label \"it's 2 m^2 @home\"", _),
+    oro_parse_statement:literal_statement("a p \"\"", _),
+    \+ oro_parse_statement:literal_statement("a p \"x\"@en", _),
+    \+ oro_parse_statement:literal_statement("a p \"x\"^^xsd:string", _),
+    \+ oro_parse_statement:literal_statement("a p \"say \\\"hi\\\"\"", _),
+    \+ oro_parse_statement:literal_statement("a p \"a [b]\"", _),
+    \+ oro_parse_statement:literal_statement("a p \"a\tb\"", _),
+    \+ oro_parse_statement:literal_statement("a  p \"x\"", _),
+    \+ oro_parse_statement:literal_statement("a p  \"x\"", _),
+    \+ oro_parse_statement:literal_statement(" a p \"x\"", _),
+    \+ oro_parse_statement:literal_statement("a p \"x\" ", _).
 test(variables_shared_the_same, true(Ts == [rdf(X, P, O), rdf(X, P, O)])) :-
     oro_statements(["?x p ?o", "?x p ?o"], Ts, [x=X, o=O]),
-    oro_parse:parse_statement("a p b", rdf(_, P, _)).
+    oro_parse_statement:parse_statement("a p b", rdf(_, P, _)).
 test(collections_random, Bad == []) :-
     random_corpus("ab ,\"'\\[]{}\t\u0000n", 16, 3000, Inners),
     findall(Text, ( member(Inner, Inners),
@@ -818,7 +818,7 @@ test(clean_value_random, Bad == []) :-
     findall(Text-Fast-General,
             ( member(Text, Texts),
               outcome(oro_clean_value(Text, S1), S1, Fast),
-              outcome(oro_parse:general_clean_value(Text, S2), S2, General),
+              outcome(oro_parse_lexer:general_clean_value(Text, S2), S2, General),
               Fast \=@= General
             ),
             Bad).
@@ -828,14 +828,14 @@ test(tokenize_random, Bad == []) :-
             ( member(Text, Texts),
               member(D, [0',, 0'\s, 0'", 0'[, 0'\\, 0'a]),  % tracked ones too
               outcome(oro_tokenize(Text, D, T1), T1, Fast),
-              outcome(oro_parse:general_tokenize(Text, D, T2), T2, General),
+              outcome(oro_parse_lexer:general_tokenize(Text, D, T2), T2, General),
               Fast \=@= General
             ),
             Bad).
 test(name_start, Bad == []) :-
     findall(C,
             ( between(0, 0x3000, C),
-              (   oro_parse:name_start(C)
+              (   oro_parse_statement:name_start(C)
               ->  Fast = true
               ;   Fast = false
               ),
@@ -852,20 +852,20 @@ test(quotes_closed_random, Bad == []) :-
     random_corpus("a \"'\\b", 10, 3000, Texts),
     findall(Text-Fast-General,
             ( member(Text, Texts),
-              test_bool(oro_parse:quotes_closed(Text), Fast),
+              test_bool(oro_parse_statement:quotes_closed(Text), Fast),
               string_codes(Text, Codes),
-              test_bool(oro_parse:closed_codes(Codes), General),
+              test_bool(oro_parse_statement:closed_codes(Codes), General),
               Fast \== General
             ),
             Bad).
 test(nul_splits_or_is_checked, true) :-
-    \+ oro_parse:plain_text("a\u0000b"),
-    \+ oro_parse:untracked("a\u0000b").
+    \+ oro_parse_lexer:plain_text("a\u0000b"),
+    \+ oro_parse_lexer:untracked("a\u0000b").
 
 :- end_tests(parse_fast_paths).
 
 local(Text) :-
-    catch(oro_parse:local_statement(Text, _), error(_, _), true).
+    catch(oro_parse_statement:local_statement(Text, _), error(_, _), true).
 
 %   literal_corpus(+N, -Texts): N random statements shaped as `S P
 %   "literal"`, now and then with what the literal fast path must
@@ -950,12 +950,12 @@ one_quote_text(Text) :-
     atomics_to_string(["[", Inner, "]"], Text).
 
 one_quote_fast(Text) :-
-    oro_parse:framed(Text, 0'[, 0'], Inner),
-    oro_parse:one_quote_elements(Inner, _).
+    oro_parse_lexer:framed(Text, 0'[, 0'], Inner),
+    oro_parse_statement:one_quote_elements(Inner, _).
 
 quoted_fast(Text) :-
-    oro_parse:framed(Text, 0'[, 0'], Inner),
-    oro_parse:quoted_elements(Inner, _).
+    oro_parse_lexer:framed(Text, 0'[, 0'], Inner),
+    oro_parse_statement:quoted_elements(Inner, _).
 
 %   statement_disagreements(+Texts, -Bad): Bad are Text-Fast-General
 %   for each of Texts that parse_statement/2 (with its fast paths) and
@@ -966,8 +966,8 @@ quoted_fast(Text) :-
 statement_disagreements(Texts, Bad) :-
     findall(Text-Fast-General,
             ( member(Text, Texts),
-              outcome(oro_parse:parse_statement(Text, T1), T1, Fast),
-              outcome(oro_parse:general_statement(Text, T2), T2, General),
+              outcome(oro_parse_statement:parse_statement(Text, T1), T1, Fast),
+              outcome(oro_parse_statement:general_statement(Text, T2), T2, General),
               Fast \=@= General
             ),
             Bad).
@@ -985,13 +985,13 @@ collection_disagreements(Texts, Bad) :-
 %   the general way only.
 
 general_collection(Text, Elements) :-
-    (   oro_parse:null_text(Text)
+    (   oro_parse_statement:null_text(Text)
     ->  Elements = []
-    ;   oro_parse:framed(Text, 0'[, 0'], Inner)
+    ;   oro_parse_lexer:framed(Text, 0'[, 0'], Inner)
     ->  (   Inner == ""
         ->  Elements = []
-        ;   oro_parse:general_tokenize(Inner, 0',, Tokens),
-            maplist(oro_parse:general_clean_value, Tokens, Elements)
+        ;   oro_parse_lexer:general_tokenize(Inner, 0',, Tokens),
+            maplist(oro_parse_lexer:general_clean_value, Tokens, Elements)
         )
     ;   throw(error(type_error(oro_collection, Text), _))
     ).
